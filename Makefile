@@ -1,0 +1,29 @@
+# Two entry points: `make demo` and `make test`. Both set up a virtual
+# environment in .venv from scratch when it is missing or outdated.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+
+.PHONY: demo test lint clean
+
+$(STAMP): pyproject.toml $(shell find cantools_od templates schemas -type f -not -name '*.pyc' 2>/dev/null)
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet ".[test]"
+	touch $(STAMP)
+
+demo: $(STAMP)
+	$(BIN)/cantools-od dump eds/cia402_drive.eds
+	$(BIN)/cantools-od pdo eds/cia402_drive.eds --node-id 5
+
+test: $(STAMP)
+	cd tests && ../$(BIN)/python -m pytest -q -p no:cacheprovider ../tests
+
+lint: $(STAMP)
+	$(BIN)/ruff check cantools_od tests bench
+	$(BIN)/ruff format --check cantools_od tests bench
+	$(BIN)/mypy cantools_od
+
+clean:
+	rm -rf $(VENV) build dist

@@ -1,0 +1,26 @@
+"""cantools-od: read, check and generate code from CANopen object dictionaries."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+__version__ = "0.1.0"
+
+if TYPE_CHECKING:
+    from .api import dumps, load, loads, save
+    from .model import Device
+
+__all__ = ["Device", "__version__", "dumps", "load", "loads", "save"]
+
+
+def __getattr__(name: str) -> Any:
+    # Lazy, so that `cantools-od --version` does not pay for pydantic and lark.
+    if name in ("dumps", "load", "loads", "save"):
+        from . import api
+
+        return getattr(api, name)
+    if name == "Device":
+        from .model import Device
+
+        return Device
+    raise AttributeError(name)

@@ -1,0 +1,95 @@
+"""The Python API: load, loads, dumps, save."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+from typing import Literal
+
+from .eds.preserve import preserve
+from .eds.reader import read_bytes
+from .eds.writer import canonical_text
+from .model import Device
+
+Format = Literal["eds", "dcf", "json"]
+Style = Literal["preserve", "canonical"]
+
+
+def load(path: str | os.PathLike[str], node_id: int | None = None) -> Device:
+    """Read an EDS, DCF or JSON model file. Raises OSError only when the path cannot be read."""
+    data = Path(path).read_bytes()
+    return loads(data, node_id=node_id, source=os.fspath(path))
+
+
+def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: Format | None = None) -> Device:
+    """Read EDS/DCF/JSON content; the format comes from `fmt`, else the content."""
+    raw = data.encode("utf-8") if isinstance(data, str) else data
+    if fmt == "json" or (fmt is None and raw.lstrip()[:1] == b"{"):
+        device = Device.model_validate_json(raw)
+        if node_id is not None:
+            device.node_id = node_id
+        return device
+    dcf = True if fmt == "dcf" else None
+    return read_bytes(raw, source, node_id=node_id, dcf=dcf)
+
+
+def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> bytes:
+    """The device as EDS, DCF or JSON.
+
+    *preserve* edits the bytes the device was read from, so an unchanged device
+    comes back byte for byte; it falls back to *canonical* for devices built
+    in code or read from JSON, and for a DCF made from an EDS.
+    """
+    if fmt == "json":
+        return device.model_dump_json(indent=2).encode("utf-8") + b"\n"
+    dcf = fmt == "dcf"
+    if dcf and not device.is_dcf and device.node_id is None:
+        raise ValueError("an EDS becomes a DCF for one node: give its node-ID")
+    if style == "preserve" and device._original is not None and dcf == device.is_dcf:
+        return preserve(device)
+    # A DCF made from an EDS states its node-ID and the values resolved for it.
+    text = canonical_text(device, dcf and not device.is_dcf)
+    try:
+        return text.encode("ascii")
+    except UnicodeEncodeError:
+        return text.encode("utf-8")  # names with non-ASCII letters are kept, not transliterated
+
+
+def save(device: Device, path: str | os.PathLike[str], fmt: Format | None = None, style: Style = "preserve") -> bool:
+    """Write the device; the format comes from the file extension unless given.
+
+    The file is replaced atomically and only when its content changes.
+    Returns whether it was written.
+    """
+    target = Path(path)
+    chosen: Format = fmt or format_for(target)
+    return write_if_changed(target, dumps(device, chosen, style))
+
+
+def format_for(path: Path) -> Format:
+    suffix = path.suffix.lower()
+    if suffix == ".dcf":
+        return "dcf"
+    if suffix == ".json":
+        return "json"
+    return "eds"
+
+
+def write_if_changed(path: Path, data: bytes) -> bool:
+    """Atomically replace `path` with `data` unless it already holds exactly that."""
+    try:
+        if path.read_bytes() == data:
+            return False
+    except OSError:
+        pass
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return True

@@ -1,0 +1,43 @@
+"""The `cantools-od` command. Each subcommand lives in a module of its own and is
+imported only when it runs, so that `--version` starts quickly."""
+
+from __future__ import annotations
+
+import importlib
+
+import click
+
+from .. import __version__
+
+# command name → (module, help line)
+COMMANDS = {
+    "dump": ("dump", "Show the object dictionary as a table or as JSON."),
+    "fmt": ("fmt", "Rewrite files in canonical form."),
+    "convert": ("convert", "Convert between EDS, DCF and JSON."),
+    "pdo": ("pdo", "Show the PDO map with bit layouts."),
+    "ids": ("ids", "Print the identifiers generated code uses, as a pin file."),
+}
+
+
+class LazyGroup(click.Group):
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted(COMMANDS)
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        entry = COMMANDS.get(cmd_name)
+        if entry is None:
+            return None
+        module = importlib.import_module(f"{__name__}.{entry[0]}")
+        command: click.Command = module.command
+        return command
+
+    def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        rows = [(name, COMMANDS[name][1]) for name in self.list_commands(ctx)]
+        with formatter.section("Commands"):
+            formatter.write_dl(rows)
+
+
+@click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, "--version", prog_name="cantools-od")
+def main() -> None:
+    """Read, check and generate code from CANopen object dictionaries."""

@@ -1,0 +1,49 @@
+"""`cantools-od fmt`: canonical form in place, or a check/diff for pre-commit and CI."""
+
+from __future__ import annotations
+
+import difflib
+import sys
+from pathlib import Path
+
+import click
+
+from ..model import Severity
+from .common import EXIT_FINDINGS, EXIT_OK, read_device, report
+
+
+@click.command(name="fmt")
+@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.option("--check", is_flag=True, help="Change nothing; exit 1 when a file would change.")
+@click.option("--diff", "show_diff", is_flag=True, help="Change nothing; print what would change as a diff.")
+def command(files: tuple[str, ...], check: bool, show_diff: bool) -> None:
+    """Rewrite FILES in canonical form (CiA 306 key order and spelling, sorted
+    sections, consistent hex, LF line ends). A file is written only when its
+    content changes."""
+    from ..api import dumps, format_for, write_if_changed
+
+    changed = 0
+    for name in files:
+        device = read_device(name)
+        report(device.diagnostics, minimum=Severity.ERROR)
+        path = Path(name)
+        original = path.read_bytes()
+        formatted = dumps(device, format_for(path), style="canonical")
+        if formatted == original:
+            continue
+        changed += 1
+        if show_diff:
+            sys.stdout.writelines(
+                difflib.unified_diff(
+                    original.decode("utf-8", "replace").splitlines(keepends=True),
+                    formatted.decode("utf-8").splitlines(keepends=True),
+                    fromfile=name,
+                    tofile=name,
+                )
+            )
+        if check or show_diff:
+            click.echo(f"would reformat {name}", err=True)
+        else:
+            write_if_changed(path, formatted)
+            click.echo(f"reformatted {name}", err=True)
+    sys.exit(EXIT_FINDINGS if changed and (check or show_diff) else EXIT_OK)

@@ -1,0 +1,47 @@
+"""Which tool's value conventions a file follows (cia306.md §16), and lely string quoting."""
+
+from __future__ import annotations
+
+import re
+
+from ..model import Dialect
+from .ini import IniFile
+
+_MAPPING_SECTION = re.compile(r"1[67ab][0-9a-f]{2}\Z", re.IGNORECASE)
+_NODEID_LAST = re.compile(r"\+\s*\$nodeid\s*\Z", re.IGNORECASE)
+
+
+def detect_dialect(parsed: IniFile) -> Dialect:
+    """Decided on evidence only a tool of that family writes; else plain CiA 306."""
+    for section in parsed.sections:
+        name = section.name.lower()
+        if _MAPPING_SECTION.match(name) and any(e.key.lower() == "compactsubobj" for e in section.entries):
+            return Dialect.LELY
+        if name == "deviceinfo" and any(
+            e.key.lower() == "vendorname" and "lely" in e.value.lower() for e in section.entries
+        ):
+            return Dialect.LELY
+    for section in parsed.sections:
+        if any(c.startswith((";StorageLocation", ";TPDODetectCos")) for c in section.comments):
+            return Dialect.CANOPENNODE
+        for entry in section.entries:
+            if entry.comments and entry.comments[0].startswith((";StorageLocation", ";TPDODetectCos")):
+                return Dialect.CANOPENNODE
+            if entry.key.lower() == "createdby" and re.search("canopen(node|editor)|libedssharp", entry.value, re.I):
+                return Dialect.CANOPENNODE
+            if _NODEID_LAST.search(entry.value):
+                return Dialect.PYTHON_CANOPEN
+            if entry.key.lower() == "edsversion" and entry.value.strip() == "4.2":
+                return Dialect.PYTHON_CANOPEN
+    return Dialect.CIA306
+
+
+def unquote(text: str) -> str | None:
+    """A lely-style quoted string's content, or None when `text` is not quoted."""
+    if len(text) < 2 or text[0] != '"' or text[-1] != '"':
+        return None
+    return re.sub(r'\\(["\\])', r"\1", text[1:-1])
+
+
+def quote(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'

@@ -1,0 +1,125 @@
+"""CiA 306 files as sections of lines, with positions, before any meaning is given.
+
+The lark grammar in file.lark finds the sections; each body is then split into
+comment, blank, entry and stray lines with one regular expression.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from functools import cache
+from importlib import resources
+
+from lark import Lark, Token
+
+
+@dataclass(slots=True)
+class Entry:
+    key: str  # as written, blanks around it removed
+    value: str  # as written, blanks around it removed
+    line: int
+    key_col: int
+    value_col: int
+    comments: tuple[str, ...] = ()  # comment lines directly above
+    spaced: bool = False  # blanks around "="
+
+
+@dataclass
+class IniSection:
+    name: str  # between the brackets, blanks removed
+    line: int
+    column: int
+    entries: list[Entry] = field(default_factory=list)
+    comments: list[str] = field(default_factory=list)  # comment lines directly above the header
+    trailing: list[str] = field(default_factory=list)  # comment lines after the last entry
+    stray: list[tuple[int, str]] = field(default_factory=list)  # lines that are no entry
+    header_text: str = ""  # the header line as written, for diagnostics
+    closed: bool = True  # the header has its "]"
+
+
+@dataclass
+class IniFile:
+    sections: list[IniSection]
+    preamble_comments: list[str]
+    preamble_stray: list[tuple[int, str]]
+    line_count: int
+
+
+_EOL = re.compile(r"\r\n|\r|\n")
+_HEADER = re.compile(r"([ \t]*)\[([^\]\r\n]*)(\]?)")
+
+
+@cache
+def _parser() -> Lark:
+    grammar = resources.files("cantools_od.eds").joinpath("file.lark").read_text()
+    return Lark(grammar, parser="lalr", lexer="basic", maybe_placeholders=False)
+
+
+def parse(text: str) -> IniFile:
+    """Split text into sections. Never fails: odd lines are kept as stray."""
+    tree = _parser().parse(text)
+    preamble_comments: list[str] = []
+    preamble_stray: list[tuple[int, str]] = []
+    sections: list[IniSection] = []
+    pending: list[str] = []
+    for token in tree.children:
+        assert isinstance(token, Token)
+        if token.type == "PREAMBLE":
+            trailing: list[str] = []
+            _split_body(token, 0, [], trailing, preamble_stray)
+            pending = trailing
+            continue
+        match = _HEADER.match(token)
+        assert match is not None
+        section = IniSection(
+            name=match.group(2).strip(),
+            line=token.line or 0,
+            column=len(match.group(1)) + 1,
+            comments=pending,
+            header_text=token[: match.end()] + token[match.end() :].split("\n", 1)[0].rstrip("\r"),
+            closed=bool(match.group(3)),
+        )
+        _split_body(token, 1, section.entries, section.trailing, section.stray)
+        # Comments after a section's last entry stand above the next header.
+        pending, section.trailing = section.trailing, []
+        sections.append(section)
+    if sections:
+        sections[-1].trailing = pending
+    else:
+        preamble_comments = pending
+    return IniFile(sections, preamble_comments, preamble_stray, text.count("\n") + 1)
+
+
+def _split_body(
+    body: Token, skip: int, entries: list[Entry], comments: list[str], stray: list[tuple[int, str]]
+) -> None:
+    line = (body.line or 1) - 1 + skip
+    for raw in _EOL.split(body)[skip:]:
+        line += 1
+        text = raw.strip(" \t")
+        if not text:
+            continue
+        if text[0] in ";#":
+            comments.append(text)
+            continue
+        key, equals, value = text.partition("=")
+        if not equals:
+            stray.append((line, text))
+            continue
+        bare_key = key.rstrip(" \t")
+        bare_value = value.lstrip(" \t")
+        indent = len(raw) - len(raw.lstrip(" \t"))
+        entries.append(
+            Entry(
+                bare_key,
+                bare_value,
+                line,
+                indent + 1,
+                indent + len(key) + 2 + len(value) - len(bare_value),
+                tuple(comments) if comments else (),
+                len(bare_key) != len(key) or len(bare_value) != len(value),
+            )
+        )
+        if comments:
+            comments.clear()

@@ -1,0 +1,112 @@
+"""CiA 306 key names: canonical spelling, order, and the model field each fills.
+
+Key names are matched case-insensitively and without blanks
+(`Supported Objects` is `SupportedObjects`).
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+
+
+class Kind(Enum):
+    STR = "str"
+    INT = "int"
+    BOOL = "bool"
+    OBJECT_TYPE = "object_type"
+    ACCESS = "access"
+    VALUE = "value"  # typed by the entry's data type
+
+
+KeySpec = tuple[str, str, Kind]  # canonical spelling, model field, kind
+
+
+def normalize(key: str) -> str:
+    return key.replace(" ", "").replace("\t", "").lower()
+
+
+def _table(*specs: KeySpec) -> dict[str, KeySpec]:
+    return {normalize(spec[0]): spec for spec in specs}
+
+
+OBJECT_KEYS = _table(
+    ("ParameterName", "name", Kind.STR),
+    ("ObjectType", "object_type", Kind.OBJECT_TYPE),
+    ("DataType", "data_type", Kind.INT),
+    ("AccessType", "access", Kind.ACCESS),
+    ("DefaultValue", "default", Kind.VALUE),
+    ("LowLimit", "low_limit", Kind.VALUE),
+    ("HighLimit", "high_limit", Kind.VALUE),
+    ("PDOMapping", "pdo_mapping", Kind.BOOL),
+    ("ObjFlags", "obj_flags", Kind.INT),
+    ("SubNumber", "sub_number", Kind.INT),
+    ("CompactSubObj", "compact_sub_obj", Kind.INT),
+    ("ParameterValue", "parameter_value", Kind.VALUE),
+    ("Denotation", "denotation", Kind.STR),
+    ("ParamRefd", "param_refd", Kind.STR),
+    ("UploadFile", "upload_file", Kind.STR),
+    ("DownloadFile", "download_file", Kind.STR),
+)
+SUB_ONLY_EXCLUDED = {"subnumber", "compactsubobj"}  # keys a sub-object section has no field for
+
+FILE_INFO_KEYS = _table(
+    ("FileName", "file_name", Kind.STR),
+    ("FileVersion", "file_version", Kind.INT),
+    ("FileRevision", "file_revision", Kind.INT),
+    ("LastEDS", "last_eds", Kind.STR),
+    ("EDSVersion", "eds_version", Kind.STR),
+    ("Description", "description", Kind.STR),
+    ("CreationTime", "creation_time", Kind.STR),
+    ("CreationDate", "creation_date", Kind.STR),
+    ("CreatedBy", "created_by", Kind.STR),
+    ("ModificationTime", "modification_time", Kind.STR),
+    ("ModificationDate", "modification_date", Kind.STR),
+    ("ModifiedBy", "modified_by", Kind.STR),
+)
+
+BAUD_RATES = (10, 20, 50, 125, 250, 500, 800, 1000)
+
+DEVICE_INFO_KEYS = _table(
+    ("VendorName", "vendor_name", Kind.STR),
+    ("VendorNumber", "vendor_number", Kind.INT),
+    ("ProductName", "product_name", Kind.STR),
+    ("ProductNumber", "product_number", Kind.INT),
+    ("RevisionNumber", "revision_number", Kind.INT),
+    ("OrderCode", "order_code", Kind.STR),
+    *((f"BaudRate_{rate}", f"baud_rates.{rate}", Kind.BOOL) for rate in BAUD_RATES),
+    ("SimpleBootUpMaster", "simple_boot_up_master", Kind.BOOL),
+    ("SimpleBootUpSlave", "simple_boot_up_slave", Kind.BOOL),
+    ("Granularity", "granularity", Kind.INT),
+    ("DynamicChannelsSupported", "dynamic_channels_supported", Kind.INT),
+    ("GroupMessaging", "group_messaging", Kind.BOOL),
+    ("NrOfRXPDO", "nr_of_rx_pdo", Kind.INT),
+    ("NrOfTXPDO", "nr_of_tx_pdo", Kind.INT),
+    ("LSS_Supported", "lss_supported", Kind.BOOL),
+    ("CompactPDO", "compact_pdo", Kind.INT),
+    ("CANopenSafetySupported", "canopen_safety_supported", Kind.BOOL),
+)
+
+COMMISSIONING_KEYS = _table(
+    ("NodeID", "node_id", Kind.INT),
+    ("NodeName", "node_name", Kind.STR),
+    ("NodeRefd", "node_refd", Kind.STR),
+    ("Baudrate", "baudrate", Kind.INT),
+    ("NetNumber", "net_number", Kind.INT),
+    ("NetworkName", "network_name", Kind.STR),
+    ("NetRefd", "net_refd", Kind.STR),
+    ("CANopenManager", "canopen_manager", Kind.BOOL),
+    ("LSS_SerialNumber", "lss_serial_number", Kind.INT),
+)
+
+# Section names (normalized) → canonical spelling.
+FILE_INFO = "FileInfo"
+DEVICE_INFO = "DeviceInfo"
+DUMMY_USAGE = "DummyUsage"
+COMMENTS = "Comments"
+OBJECT_LISTS = {
+    "mandatoryobjects": ("MandatoryObjects", "mandatory_objects"),
+    "optionalobjects": ("OptionalObjects", "optional_objects"),
+    "manufacturerobjects": ("ManufacturerObjects", "manufacturer_objects"),
+}
+COMMISSIONING = "DeviceComissioning"
+COMMISSIONING_SPELLINGS = {"devicecomissioning", "devicecommissioning"}

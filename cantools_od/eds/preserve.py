@@ -1,0 +1,135 @@
+"""Writes a device back over the bytes it was read from, touching only what changed.
+
+The original is read again and both it and the device are put in canonical
+form; where the two agree, the original lines stay byte for byte.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+
+from ..model import Device
+from . import ini
+from .decode import decode
+from .keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, normalize
+from .reader import read_bytes
+from .writer import OutSection, render, sections
+
+_OBJECT = re.compile(r"([0-9a-fA-F]{1,4})(?:[sS][uU][bB]([0-9a-fA-F]{1,3})|(\w+))?\Z")
+_SECTION_TABLES = {
+    "fileinfo": ("FileInfo", FILE_INFO_KEYS),
+    "deviceinfo": ("DeviceInfo", DEVICE_INFO_KEYS),
+    "devicecomissioning": ("DeviceComissioning", COMMISSIONING_KEYS),
+    "devicecommissioning": ("DeviceComissioning", COMMISSIONING_KEYS),
+}
+_SUFFIXES = {"name": "Name", "value": "Value", "denotation": "Denotation", "objectlinks": "ObjectLinks"}
+_LIST_NAMES = {
+    n.lower(): n for n in ("MandatoryObjects", "OptionalObjects", "ManufacturerObjects", "DummyUsage", "Comments")
+}
+
+
+def canonical_section_name(name: str) -> str:
+    match = _OBJECT.match(name)
+    if match is not None and (match.group(3) is None or match.group(3).lower() in _SUFFIXES):
+        index = f"{int(match.group(1), 16):04X}"
+        if match.group(2) is not None:
+            return f"{index}sub{int(match.group(2), 16):X}"
+        return index + (_SUFFIXES[match.group(3).lower()] if match.group(3) else "")
+    lower = name.lower()
+    if lower in _SECTION_TABLES:
+        return _SECTION_TABLES[lower][0]
+    return _LIST_NAMES.get(lower, name)
+
+
+def _canonical_key(section: str, key: str) -> str:
+    table = _SECTION_TABLES.get(section.lower(), (None, OBJECT_KEYS if _OBJECT.match(section) else {}))[1]
+    spec = table.get(normalize(key))
+    if spec is not None:
+        return spec[0]
+    if (
+        section in ("MandatoryObjects", "OptionalObjects", "ManufacturerObjects")
+        and normalize(key) == "supportedobjects"
+    ):
+        return "SupportedObjects"
+    return key
+
+
+def preserve(device: Device) -> bytes:
+    original = device._original
+    if original is None:
+        raise ValueError("the device was not read from EDS/DCF bytes")
+    before = {s.name: s for s in sections(read_bytes(original, device.source, dcf=device.is_dcf))}
+    after = {s.name: s for s in sections(device)}
+    if _entries(before) == _entries(after):
+        return original
+    text, fallback = decode(original)
+    lines = text.splitlines(keepends=True)
+    out = _apply(lines, _plan(ini.parse(text), lines, before, after))
+    encoding = "utf-8" if fallback is None else "cp1252"
+    try:
+        data = out.encode(encoding)
+    except UnicodeEncodeError:
+        data = out.encode("utf-8")  # new text the old code page cannot hold
+    return (b"\xef\xbb\xbf" if original.startswith(b"\xef\xbb\xbf") else b"") + data
+
+
+def _entries(by_name: dict[str, OutSection]) -> dict[str, dict[str, str]]:
+    return {name: section.entries for name, section in by_name.items()}
+
+
+def _eol(line: str) -> str:
+    return line[len(line.rstrip("\r\n")) :]
+
+
+def _dominant_eol(lines: list[str]) -> str:
+    counts = Counter(_eol(line) for line in lines)
+    counts.pop("", None)
+    return counts.most_common(1)[0][0] if counts else "\n"
+
+
+def _apply(lines: list[str], edits: dict[int, list[str]]) -> str:
+    """Lines with edits applied; edits[len(lines)+1] is text to append."""
+    out: list[str] = []
+    for number, line in enumerate(lines, 1):
+        out.extend(edits.get(number, [line]))
+    tail = edits.get(len(lines) + 1, [])
+    if tail and out and not _eol(out[-1]):
+        out[-1] += _dominant_eol(lines)
+    out.extend(tail)
+    return "".join(out)
+
+
+def _plan(
+    parsed: ini.IniFile, lines: list[str], before: dict[str, OutSection], after: dict[str, OutSection]
+) -> dict[int, list[str]]:
+    """Line number → the lines that replace it."""
+    eol = _dominant_eol(lines)
+    edits: dict[int, list[str]] = {}
+    for section in parsed.sections:
+        name = canonical_section_name(section.name)
+        old, new = before.get(name), after.get(name)
+        if old is None or (new is not None and old.entries == new.entries):
+            continue
+        last_line = max([section.line, *(e.line for e in section.entries)])
+        if new is None:
+            for line in range(section.line, last_line + 1):
+                edits[line] = []
+            continue
+        by_key = {_canonical_key(name, e.key): e for e in section.entries}
+        for key, entry in by_key.items():
+            raw = lines[entry.line - 1]
+            if key not in new.entries:
+                edits[entry.line] = []
+            elif new.entries[key] != old.entries.get(key):
+                edits[entry.line] = [raw[: entry.value_col - 1] + new.entries[key] + (_eol(raw) or eol)]
+        added = [f"{key}={text}{eol}" for key, text in new.entries.items() if key not in by_key]
+        if added:
+            kept = edits.get(last_line, [lines[last_line - 1]])
+            if kept and not _eol(kept[-1]):
+                kept = [*kept[:-1], kept[-1] + eol]
+            edits[last_line] = kept + added
+    appended = [s for name, s in after.items() if name not in before]
+    if appended:
+        edits[len(lines) + 1] = [eol] + [line + eol for line in render(appended, []).splitlines()]
+    return edits

@@ -1,0 +1,24 @@
+"""Collects the reader's diagnostics for one file."""
+
+from __future__ import annotations
+
+from ..model import Diagnostic, Location, Severity
+
+
+class Report:
+    def __init__(self, file: str) -> None:
+        self.file = file
+        self.diagnostics: list[Diagnostic] = []
+
+    def add(self, code: str, severity: Severity, message: str, line: int = 0, column: int = 0) -> None:
+        location = Location(file=self.file, line=line, column=column)
+        self.diagnostics.append(Diagnostic(code=code, severity=severity, message=message, location=location))
+
+    def error(self, code: str, message: str, line: int = 0, column: int = 0) -> None:
+        self.add(code, Severity.ERROR, message, line, column)
+
+    def warning(self, code: str, message: str, line: int = 0, column: int = 0) -> None:
+        self.add(code, Severity.WARNING, message, line, column)
+
+    def info(self, code: str, message: str, line: int = 0, column: int = 0) -> None:
+        self.add(code, Severity.INFO, message, line, column)

@@ -1,0 +1,97 @@
+"""Keyed sections → model fields, keeping spelling, comments and positions."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..model import AccessType, ObjectKind, Origin, RawSection
+from ..model.assemble import assemble
+from .ini import Entry, IniSection
+from .keys import KeySpec, Kind, normalize
+from .report import Report
+from .values import parse_int
+
+
+class Collected:
+    """The entries of one section, sorted into fields, extra keys and comments."""
+
+    __slots__ = ("comments", "deferred", "extra", "fields", "origin")
+
+    def __init__(self, origin: Origin) -> None:
+        self.fields: dict[str, Any] = {}
+        self.extra: dict[str, str] = {}
+        self.comments: dict[str, list[str]] = {}
+        self.origin = origin
+        self.deferred: dict[str, Entry] = {}  # typed values, read once the data type is known
+
+    def common(self) -> dict[str, Any]:
+        return {"extra": self.extra, "comments": self.comments, "origin": self.origin}
+
+
+def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> Collected:
+    origin = assemble(Origin, {"file": report.file, "line": section.line, "column": section.column, "keys": {}}, {})
+    collected = Collected(origin)
+    if section.comments:
+        collected.comments[""] = section.comments
+    keys = origin.keys
+    for entry in section.entries:
+        spec = table.get(normalize(entry.key))
+        name = spec[0] if spec is not None else entry.key
+        if name in keys:
+            report.warning(
+                "EDS002",
+                f"[{section.name}] {entry.key} given again (first on line {keys[name][0]}); the last one counts",
+                entry.line,
+                entry.key_col,
+            )
+            collected.extra.pop(entry.key, None)
+        keys[name] = (entry.line, entry.key_col, entry.value_col)
+        if entry.comments:
+            collected.comments[name] = list(entry.comments)
+        if spec is None:
+            collected.extra[entry.key] = entry.value
+            continue
+        _, field, kind = spec
+        if kind is Kind.VALUE:
+            collected.deferred[field] = entry
+            continue
+        try:
+            value = convert(entry.value, kind)
+        except ValueError as error:
+            report.error("EDS030", f"{entry.key}: {error}", entry.line, entry.value_col)
+            collected.extra[entry.key] = entry.value
+            continue
+        collected.fields[field] = value
+    return collected
+
+
+def convert(text: str, kind: Kind) -> Any:
+    """A key's text as its kind; None for an empty value. Raises ValueError."""
+    if kind is Kind.STR:
+        return text
+    if text == "":
+        return None
+    if kind is Kind.ACCESS:
+        try:
+            return AccessType(text.lower())
+        except ValueError:
+            raise ValueError(f"{text!r} is not an access type (ro, wo, rw, rwr, rww, const)") from None
+    number, _ = parse_int(text)
+    if not isinstance(number, int):
+        raise ValueError(f"{text!r}: $NODEID is not allowed here")
+    if kind is Kind.BOOL:
+        if number not in (0, 1):
+            raise ValueError(f"{text!r} is not 0 or 1")
+        return bool(number)
+    if kind is Kind.OBJECT_TYPE:
+        try:
+            return ObjectKind(number)
+        except ValueError:
+            raise ValueError(f"{text!r} is not an object type (0, 2, 5, 6, 7, 8, 9)") from None
+    return number
+
+
+def raw_section(section: IniSection, report: Report) -> RawSection:
+    """A section kept as text, keys in file order."""
+    collected = collect(section, {}, report)
+    return RawSection(name=section.name, entries=collected.extra, comments=collected.comments, origin=collected.origin)

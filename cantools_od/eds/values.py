@@ -1,0 +1,227 @@
+"""Text of one entry → typed value, with notes on anything unusual.
+
+Integers go through a lark grammar (value.lark) unless they are a plain
+decimal or hex number; results are cached by text, since real files repeat
+the same few values thousands of times.
+"""
+
+from __future__ import annotations
+
+import re
+import struct
+from dataclasses import dataclass
+from functools import cache, lru_cache
+from importlib import resources
+
+from lark import Lark, LarkError, Token
+
+from ..model import NodeIdExpr, RawValue, Severity, TimeValue, Value, ValueKind
+
+Note = tuple[str, Severity, str]
+
+
+@dataclass(frozen=True)
+class Parsed:
+    value: Value | None
+    notes: tuple[Note, ...] = ()
+    comment: str | None = None  # an inline comment cut off the value
+
+
+_PLAIN_INT = re.compile(r"-?(?:0[xX][0-9a-fA-F]+|[1-9][0-9]*|0)\Z")
+_HEX_BYTES = re.compile(r"(?:[0-9a-fA-F]{2})*\Z")
+_INLINE_COMMENT = re.compile(r"[ \t]+[;#]")
+_SUFFIX = re.compile(r"[uUlL]+\Z")
+
+
+@cache
+def _grammar() -> Lark:
+    text = resources.files("cantools_od.eds").joinpath("value.lark").read_text()
+    return Lark(text, parser="lalr")
+
+
+def _number(token: str) -> tuple[int, list[Note]]:
+    notes: list[Note] = []
+    digits = _SUFFIX.sub("", token)  # u and l are no hex digits, so this is safe for hex too
+    if digits != token:
+        notes.append(("EDS032", Severity.WARNING, f"C suffix in {token!r} is not CiA 306 syntax"))
+    if digits[:2].lower() == "0x":
+        return int(digits, 16), notes
+    if len(digits) > 1 and digits[0] == "0":
+        if any(c in "89" for c in digits):
+            raise ValueError(f"{token!r} is not a valid octal number")
+        notes.append(
+            (
+                "EDS032",
+                Severity.WARNING,
+                f"{token!r} is octal ({int(digits, 8)}) per CiA 306; python-canopen reads it differently",
+            )
+        )
+        return int(digits, 8), notes
+    return int(digits), notes
+
+
+def _parse_integer_expr(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
+    tree = _grammar().parse(text)
+    tokens = [t for t in tree.scan_values(lambda v: isinstance(v, Token))]
+    notes: list[Note] = []
+    total = 0
+    nodeid_at: int | None = None
+    sign = 1
+    operands = 0
+    for token in tokens:
+        if token.type == "MINUS":
+            sign = -1
+        elif token.type == "OP":
+            if token in "*/":
+                raise ValueError(f"{text!r}: only + may combine terms")
+            sign = 1 if token == "+" else -1
+        elif token.type == "NODEID":
+            if nodeid_at is not None or sign < 0:
+                raise ValueError(f"{text!r}: $NODEID may appear once and only be added")
+            nodeid_at = operands
+            operands += 1
+        else:
+            value, number_notes = _number(str(token))
+            notes.extend(number_notes)
+            total += sign * value
+            operands += 1
+    if nodeid_at is None:
+        if operands > 1:
+            raise ValueError(f"{text!r}: arithmetic is allowed only with $NODEID")
+        return total, notes
+    if nodeid_at > 0:
+        notes.append(
+            (
+                "EDS033",
+                Severity.WARNING,
+                f"{text!r}: $NODEID should come first ($NODEID+n); lely rejects this form",
+            )
+        )
+    elif operands > 2:
+        notes.append(("EDS033", Severity.WARNING, f"{text!r}: python-canopen and lely read one term only"))
+    elif "-" in text:
+        notes.append(("EDS033", Severity.ERROR, f"{text!r}: $NODEID may only be added to"))
+    if text.count("$") == 1 and "$NODEID" not in text:
+        notes.append(("EDS033", Severity.WARNING, f"{text!r}: write $NODEID in upper case"))
+    return NodeIdExpr(offset=total, text=text), notes
+
+
+def parse_int(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
+    """An integer or `$NODEID` sum; raises ValueError when it is neither."""
+    if _PLAIN_INT.match(text):
+        return int(text, 0), []
+    try:
+        return _parse_integer_expr(text)
+    except LarkError as error:
+        raise ValueError(f"{text!r} is not a number") from error
+
+
+@lru_cache(maxsize=65536)
+def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: str) -> Parsed:
+    """Read `text` as a value of the given kind. Never raises."""
+    if text == "":
+        return Parsed(None)
+    try:
+        return _parse(text, kind, bits, type_name)
+    except ValueError as error:
+        cut = _INLINE_COMMENT.search(text)
+        if cut is not None and kind not in (ValueKind.STRING, ValueKind.UNICODE, None):
+            head, comment = text[: cut.start()], text[cut.end() - 1 :]
+            retry = parse_value(head, kind, bits, type_name)
+            if not isinstance(retry.value, RawValue):
+                note = (
+                    "EDS032",
+                    Severity.WARNING,
+                    f"inline comment {comment!r} after the value; CiA 306 has none, tools disagree on it",
+                )
+                return Parsed(retry.value, (*retry.notes, note), comment)
+        return Parsed(RawValue(text=text), (("EDS030", Severity.ERROR, f"{error} for {type_name}"),))
+
+
+def _parse(text: str, kind: ValueKind | None, bits: int | None, type_name: str) -> Parsed:
+    if kind is ValueKind.UNSIGNED or kind is ValueKind.SIGNED:
+        number, notes = parse_int(text)
+        if (
+            kind is ValueKind.SIGNED
+            and isinstance(number, int)
+            and bits is not None
+            and text.lstrip()[:2].lower() == "0x"
+            and (1 << (bits - 1)) <= number < (1 << bits)
+        ):
+            notes.append(
+                (
+                    "EDS032",
+                    Severity.WARNING,
+                    f"{text!r} read as two's complement ({number - (1 << bits)}); lely reads it as overflow",
+                )
+            )
+            number -= 1 << bits
+        return Parsed(number, tuple(notes))
+    if kind is ValueKind.BOOL:
+        number, notes = parse_int(text)
+        if number not in (0, 1):
+            raise ValueError(f"{text!r} is not 0 or 1")
+        return Parsed(bool(number), tuple(notes))
+    if kind is ValueKind.REAL:
+        return Parsed(_parse_real(text, bits or 32))
+    if kind is ValueKind.OCTETS:
+        compact = text.replace(" ", "")
+        if not _HEX_BYTES.match(compact):
+            raise ValueError(f"{text!r} is not hex byte pairs")
+        blanks: tuple[Note, ...] = ()
+        if compact != text:
+            blanks = (("EDS032", Severity.WARNING, "hex bytes separated by blanks"),)
+        return Parsed(bytes.fromhex(compact), blanks)
+    if kind is ValueKind.TIME:
+        parts = text.split()
+        if len(parts) == 2:
+            days, _ = parse_int(parts[0])
+            ms, _ = parse_int(parts[1])
+            if isinstance(days, int) and isinstance(ms, int):
+                return Parsed(TimeValue(days=days, ms=ms))
+        number, notes = parse_int(text)
+        if not isinstance(number, int):
+            raise ValueError(f"{text!r} is not a time value")
+        return Parsed(TimeValue.from_bits(number), tuple(notes))
+    if kind is ValueKind.STRING or kind is ValueKind.UNICODE:
+        return Parsed(text)
+    return Parsed(RawValue(text=text))  # records and unknown types: no value syntax
+
+
+def _parse_real(text: str, bits: int) -> float:
+    if text.lstrip("-")[:2].lower() == "0x":
+        pattern = int(text, 16)
+        if pattern >= 1 << bits:
+            raise ValueError(f"{text!r} is wider than {bits} bits")
+        fmt = "<f" if bits == 32 else "<d"
+        return float(struct.unpack(fmt, pattern.to_bytes(bits // 8, "little"))[0])
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"{text!r} is not a real number") from None
+    if bits != 32:
+        return value
+    try:
+        return float(struct.unpack("<f", struct.pack("<f", value))[0])
+    except OverflowError:
+        raise ValueError(f"{text!r} is beyond the REAL32 range") from None
+
+
+def format_real(value: float, bits: int, as_bits: bool) -> str:
+    """REAL text: IEEE bit pattern (lely) or the shortest decimal that reads back."""
+    if as_bits:
+        fmt = "<f" if bits == 32 else "<d"
+        return f"0x{int.from_bytes(struct.pack(fmt, value), 'little'):0{bits // 4}X}"
+    if bits == 32:
+        for digits in range(1, 10):
+            text = f"{value:.{digits}g}"
+            try:
+                if struct.unpack("<f", struct.pack("<f", float(text)))[0] == value:
+                    return _decimal(text)
+            except OverflowError:  # rounded up past the largest REAL32
+                continue
+    return _decimal(repr(value))
+
+
+def _decimal(text: str) -> str:
+    return text if any(c in text for c in ".eEn") else text + ".0"

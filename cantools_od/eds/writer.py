@@ -1,0 +1,160 @@
+"""Device → CiA 306 text in canonical form: sections sorted, keys in CiA order."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
+from ..model.device import Commissioning, DeviceInfo, FileInfo
+from .compact import implicit_sub_name
+from .format import format_key, format_value
+from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
+
+
+@dataclass
+class OutSection:
+    name: str
+    entries: dict[str, str] = field(default_factory=dict)
+    comments: dict[str, list[str]] = field(default_factory=dict)
+
+
+def sections(device: Device, dcf: bool = False) -> list[OutSection]:
+    """The canonical sections of a device, in order. `dcf` adds commissioning and resolved values."""
+    # [FileInfo] and [DeviceInfo] are mandatory, but are not made up when the model has nothing for them.
+    out = [
+        section
+        for section in (
+            _keyed("FileInfo", device.file_info, FILE_INFO_KEYS),
+            _keyed("DeviceInfo", device.device_info, DEVICE_INFO_KEYS),
+        )
+        if section.entries or section.comments
+    ]
+    if device.commissioning is not None or dcf:
+        commissioning = device.commissioning or Commissioning()
+        if dcf and device.node_id is not None:
+            commissioning = commissioning.model_copy(update={"node_id": device.node_id})
+        out.append(_keyed(COMMISSIONING, commissioning, COMMISSIONING_KEYS))
+    if device.dummy_usage is not None:
+        usage = device.dummy_usage
+        entries = {f"Dummy{index:04X}": "1" if on else "0" for index, on in sorted(usage.enabled.items())}
+        out.append(_with_extra("DummyUsage", entries, usage))
+    if device.comments is not None:
+        comments = device.comments
+        entries = {"Lines": format_key("Lines", comments.line_count)} if comments.line_count is not None else {}
+        entries.update({f"Line{n}": text for n, text in comments.lines.items()})
+        out.append(_with_extra("Comments", entries, comments))
+    for name, attr in (
+        ("MandatoryObjects", device.mandatory_objects),
+        ("OptionalObjects", device.optional_objects),
+        ("ManufacturerObjects", device.manufacturer_objects),
+    ):
+        if attr is not None:
+            entries = (
+                {"SupportedObjects": format_key("", attr.supported_objects)}
+                if attr.supported_objects is not None
+                else {}
+            )
+            entries.update({str(pos): f"0x{index:04X}" for pos, index in sorted(attr.entries.items())})
+            out.append(_with_extra(name, entries, attr))
+    for obj in device.objects.values():
+        if not obj.implicit:
+            out.extend(_object_sections(device, obj, dcf))
+    for raw in [*device.module_sections, *device.other_sections]:
+        out.append(_with_extra(raw.name, dict(raw.entries), raw))
+    return out
+
+
+def _with_extra(name: str, entries: dict[str, str], section: Section) -> OutSection:
+    for key, text in section.extra.items():
+        entries.setdefault(key, text)
+    return OutSection(name, entries, dict(section.comments))
+
+
+def _keyed(name: str, model: FileInfo | DeviceInfo | Commissioning, table: dict[str, KeySpec]) -> OutSection:
+    entries: dict[str, str] = {}
+    data: dict[str, Any] = dict(model.__dict__)
+    for spelling, attr, _ in table.values():
+        if attr.startswith("baud_rates."):
+            value: Any = data["baud_rates"].get(int(attr.split(".")[1]))
+        else:
+            value = data[attr]
+        if value is not None:
+            entries[spelling] = format_key(spelling, value)
+    return _with_extra(name, entries, model)
+
+
+def _variable_entries(device: Device, var: Variable, owner: Object, dcf: bool) -> dict[str, str]:
+    entries: dict[str, str] = {}
+    data = var.__dict__
+    dtype = None
+    for spelling, attr, kind in OBJECT_KEYS.values():
+        value = data.get(attr)
+        if (
+            attr == "parameter_value"
+            and value is None
+            and dcf
+            and isinstance(var.default, NodeIdExpr)
+            and device.node_id is not None
+        ):
+            value = device.resolve(var.default)  # a DCF states the value for its node-ID
+        if value is None:
+            continue
+        if kind.value == "value":
+            dtype = dtype or device.entry_type(var, owner)
+            entries[spelling] = format_value(value, dtype, device.dialect)
+        else:
+            entries[spelling] = format_key(spelling, value)
+    return entries
+
+
+def _object_sections(device: Device, obj: Object, dcf: bool) -> list[OutSection]:
+    name = f"{obj.index:04X}"
+    out = [_with_extra(name, _variable_entries(device, obj, obj, dcf), obj)]
+    compact: dict[str, dict[str, str]] = {"Name": {}, "Value": {}, "Denotation": {}}
+    dtype = device.entry_type(obj, obj)
+    for subindex, sub in obj.subs.items():
+        if sub.implicit and obj.compact_sub_obj:
+            _compact_entries(device, obj, subindex, sub, compact, dtype)
+            continue
+        out.append(_with_extra(f"{name}sub{subindex:X}", _variable_entries(device, sub, obj, dcf), sub))
+    for suffix, entries in compact.items():
+        if entries:
+            out.append(OutSection(f"{name}{suffix}", {"NrOfEntries": str(len(entries)), **entries}))
+    if obj.links is not None:
+        links = {str(n): f"0x{index:04X}" for n, index in enumerate(obj.links, 1)}
+        out.append(OutSection(f"{name}ObjectLinks", {"ObjectLinks": str(len(links)), **links}))
+    return out
+
+
+def _compact_entries(
+    device: Device, obj: Object, subindex: int, sub: SubObject, compact: dict[str, dict[str, str]], dtype: Any
+) -> None:
+    if subindex == 0:
+        return
+    key = str(subindex)
+    if sub.name != implicit_sub_name(obj, subindex):
+        compact["Name"][key] = sub.name
+    if sub.parameter_value is not None:
+        compact["Value"][key] = format_value(sub.parameter_value, dtype, device.dialect)
+    if sub.denotation is not None:
+        compact["Denotation"][key] = sub.denotation
+
+
+def render(out: list[OutSection], trailing: list[str], eol: str = "\n") -> str:
+    lines: list[str] = []
+    for section in out:
+        lines.extend(section.comments.get("", []))
+        lines.append(f"[{section.name}]")
+        for key, text in section.entries.items():
+            lines.extend(section.comments.get(key, []))
+            lines.append(f"{key}={text}")
+        lines.append("")
+    lines.extend(trailing)
+    while lines and lines[-1] == "":
+        lines.pop()
+    return eol.join(lines) + eol if lines else ""
+
+
+def canonical_text(device: Device, dcf: bool = False) -> str:
+    return render(sections(device, dcf), device.trailing_comments)

@@ -1,0 +1,169 @@
+"""The device: everything an EDS or DCF says about one CANopen device."""
+
+from __future__ import annotations
+
+from enum import StrEnum
+
+from pydantic import BaseModel, Field, PrivateAttr
+
+from .datatypes import DOMAIN, DataType, standard_type
+from .objects import Object, ObjectKind, Section, Variable
+from .source import Diagnostic
+from .values import NodeIdExpr, Value
+
+
+class Dialect(StrEnum):
+    """The value conventions a file follows (cia306.md §16)."""
+
+    CIA306 = "cia306"
+    LELY = "lely"
+    PYTHON_CANOPEN = "python-canopen"
+    CANOPENNODE = "canopennode"
+
+
+class FileInfo(Section):
+    file_name: str | None = None
+    file_version: int | None = None
+    file_revision: int | None = None
+    eds_version: str | None = None
+    description: str | None = None
+    creation_time: str | None = None
+    creation_date: str | None = None
+    created_by: str | None = None
+    modification_time: str | None = None
+    modification_date: str | None = None
+    modified_by: str | None = None
+    last_eds: str | None = None
+
+
+class DeviceInfo(Section):
+    vendor_name: str | None = None
+    vendor_number: int | None = None
+    product_name: str | None = None
+    product_number: int | None = None
+    revision_number: int | None = None
+    order_code: str | None = None
+    baud_rates: dict[int, bool] = Field(default_factory=dict)
+    """kbit/s → supported, from the BaudRate_<kbit/s> keys."""
+    simple_boot_up_master: bool | None = None
+    simple_boot_up_slave: bool | None = None
+    granularity: int | None = None
+    dynamic_channels_supported: int | None = None
+    group_messaging: bool | None = None
+    nr_of_rx_pdo: int | None = None
+    nr_of_tx_pdo: int | None = None
+    lss_supported: bool | None = None
+    compact_pdo: int | None = None
+    canopen_safety_supported: bool | None = None
+
+
+class DummyUsage(Section):
+    enabled: dict[int, bool] = Field(default_factory=dict)
+    """Data-type index → may be used as a dummy mapping entry."""
+
+
+class Comments(Section):
+    line_count: int | None = None
+    lines: dict[int, str] = Field(default_factory=dict)
+
+
+class ObjectList(Section):
+    """[MandatoryObjects], [OptionalObjects] or [ManufacturerObjects] as written."""
+
+    supported_objects: int | None = None
+    entries: dict[int, int] = Field(default_factory=dict)
+    """Position (1..n) → object index."""
+
+
+class Commissioning(Section):
+    """[DeviceComissioning] of a DCF."""
+
+    node_id: int | None = None
+    node_name: str | None = None
+    node_refd: str | None = None
+    baudrate: int | None = None
+    net_number: int | None = None
+    network_name: str | None = None
+    net_refd: str | None = None
+    canopen_manager: bool | None = None
+    lss_serial_number: int | None = None
+
+
+class RawSection(Section):
+    """A section this model keeps as text: module concept, tools, vendor sections."""
+
+    name: str
+    entries: dict[str, str] = Field(default_factory=dict)
+
+
+class Device(BaseModel):
+    """One device's object dictionary with its file-level descriptions."""
+
+    file_info: FileInfo = FileInfo()
+    device_info: DeviceInfo = DeviceInfo()
+    dummy_usage: DummyUsage | None = None
+    comments: Comments | None = None
+    mandatory_objects: ObjectList | None = None
+    optional_objects: ObjectList | None = None
+    manufacturer_objects: ObjectList | None = None
+    objects: dict[int, Object] = Field(default_factory=dict)
+    commissioning: Commissioning | None = None
+    module_sections: list[RawSection] = []
+    other_sections: list[RawSection] = []
+    """Sections of no known meaning, kept in file order."""
+    trailing_comments: list[str] = []
+    """Comment lines after the last entry of the file."""
+    dialect: Dialect = Dialect.CIA306
+    is_dcf: bool = False
+    node_id: int | None = None
+    """The node-ID `$NODEID` stands for: given when loading, else the DCF's NodeID."""
+    source: str = ""
+    """The file this device was read from, for messages."""
+    diagnostics: list[Diagnostic] = []
+
+    # The bytes the device was read from: the preserving writer edits them.
+    _original: bytes | None = PrivateAttr(default=None)
+
+    def resolve(self, value: Value | None, node_id: int | None = None) -> Value | None:
+        """A value with `$NODEID` replaced by the given or commissioned node-ID."""
+        nid = node_id if node_id is not None else self.node_id
+        if isinstance(value, NodeIdExpr) and nid is not None:
+            return value.resolve(nid)
+        return value
+
+    def entry_type(self, var: Variable, owner: Object) -> DataType | None:
+        """The type `var`'s values are written in: a CiA 301 type, or one a DEFTYPE object aliases.
+
+        `owner` is the object `var` belongs to (or `var` itself for a VAR or DOMAIN).
+        """
+        if var.data_type is None:
+            return DOMAIN if var is owner and owner.kind is ObjectKind.DOMAIN else None
+        dtype = standard_type(var.data_type)
+        if dtype is None and var.data_type < 0x1000:
+            alias = self.objects.get(var.data_type)
+            if alias is not None and alias.kind is ObjectKind.DEFTYPE:
+                dtype = standard_type(alias.data_type)
+        return dtype
+
+    def content(self) -> dict[str, object]:
+        """The model as JSON data without source positions, diagnostics and dialect.
+
+        Two devices describe the same thing when their contents are equal,
+        whichever files and layouts they were read from.
+        """
+        data = self.model_dump(mode="json", exclude={"diagnostics", "source", "dialect"})
+        stripped = _strip_origins(data)
+        assert isinstance(stripped, dict)
+        return stripped
+
+
+def _strip_origins(data: object) -> object:
+    if isinstance(data, dict):
+        return {
+            key: _strip_origins(value)
+            for key, value in data.items()
+            if key != "origin" and not (key == "text" and "nodeid" in data)
+        }
+    if isinstance(data, list):
+        return [_strip_origins(item) for item in data]
+    return data

@@ -1,0 +1,130 @@
+"""Objects and sub-objects of an object dictionary."""
+
+from __future__ import annotations
+
+from enum import IntEnum, StrEnum
+
+from pydantic import BaseModel
+
+from .datatypes import DataType, standard_type
+from .source import Origin
+from .values import NodeIdExpr, Value
+
+
+class ObjectKind(IntEnum):
+    """ObjectType codes of CiA 301."""
+
+    NULL = 0x0
+    DOMAIN = 0x2
+    DEFTYPE = 0x5
+    DEFSTRUCT = 0x6
+    VAR = 0x7
+    ARRAY = 0x8
+    RECORD = 0x9
+
+
+class AccessType(StrEnum):
+    RO = "ro"
+    WO = "wo"
+    RW = "rw"
+    RWR = "rwr"
+    RWW = "rww"
+    CONST = "const"
+
+    @property
+    def readable(self) -> bool:
+        return self is not AccessType.WO
+
+    @property
+    def writable(self) -> bool:
+        return self in (AccessType.WO, AccessType.RW, AccessType.RWR, AccessType.RWW)
+
+
+class Section(BaseModel):
+    """What every section-backed part of the model keeps beside its data.
+
+    `extra` holds keys this model has no field for, and known keys whose value
+    could not be read, verbatim and in file order, so nothing is lost.
+    `comments` maps a canonical key name (or "" for the section header) to the
+    comment lines written directly above it.
+    """
+
+    extra: dict[str, str] = {}
+    comments: dict[str, list[str]] = {}
+    origin: Origin | None = None
+
+
+class Variable(Section):
+    """The entries a VAR, a sub-object or a CompactSubObj parent can carry."""
+
+    name: str = ""
+    data_type: int | None = None
+    access: AccessType | None = None
+    pdo_mapping: bool | None = None
+    default: Value | None = None
+    low_limit: Value | None = None
+    high_limit: Value | None = None
+    obj_flags: int | None = None
+    # DCF entries
+    parameter_value: Value | None = None
+    denotation: str | None = None
+    param_refd: str | None = None
+    upload_file: str | None = None
+    download_file: str | None = None
+
+    @property
+    def dtype(self) -> DataType | None:
+        return standard_type(self.data_type)
+
+    @property
+    def mappable(self) -> bool:
+        return bool(self.pdo_mapping)
+
+    def value(self, node_id: int | None = None) -> Value | None:
+        """The configured value (ParameterValue, else DefaultValue), resolved for a node-ID."""
+        value = self.parameter_value if self.parameter_value is not None else self.default
+        if isinstance(value, NodeIdExpr) and node_id is not None:
+            return value.resolve(node_id)
+        return value
+
+
+class SubObject(Variable):
+    """A sub-index of an ARRAY, RECORD or DEFSTRUCT.
+
+    `implicit` marks sub-objects that the file describes only through
+    CompactSubObj or CompactPDO rather than with a section of their own.
+    """
+
+    object_type: ObjectKind | None = None
+    implicit: bool = False
+
+
+class Object(Variable):
+    """An object at one index.
+
+    `object_type` is None when the file leaves ObjectType out (a VAR). For
+    ARRAY/RECORD, `sub_number` is the SubNumber as written and `compact_sub_obj`
+    the CompactSubObj count; `subs` always holds every sub-object, expanded.
+    """
+
+    index: int
+    object_type: ObjectKind | None = None
+    sub_number: int | None = None
+    compact_sub_obj: int | None = None
+    subs: dict[int, SubObject] = {}
+    links: list[int] | None = None
+    implicit: bool = False
+
+    @property
+    def kind(self) -> ObjectKind:
+        return ObjectKind.VAR if self.object_type is None else self.object_type
+
+    @property
+    def has_subs(self) -> bool:
+        return self.kind in (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
+
+    def entry(self, subindex: int) -> Variable | None:
+        """The VAR itself for sub-index 0 of a VAR, else the sub-object."""
+        if not self.has_subs:
+            return self if subindex == 0 else None
+        return self.subs.get(subindex)

@@ -1,0 +1,1 @@
+"""Target-neutral views of a device that renderers and CLI output share."""

@@ -28,7 +28,7 @@ def draw(pdo: Pdo) -> str:
                 joined = bit + 1 in owner and owner.get(bit + 1) == owner.get(bit) and mark is not None
                 cells.append("-" if joined else "|")
             cells.append(cell)
-        lines.append(f"  {byte:3d} |{''.join(cells)}|")
+        lines.append(f" {byte:3d} |{''.join(cells)}|")
         lines.append(_RULE)
         for entry in pdo.entries:
             msb = entry.bit_offset + entry.bit_length - 1

@@ -23,7 +23,7 @@ def type_entry(device: Device, var: Variable, owner: Object, field: str, entry: 
     parsed = parse_value(text, kind, dtype.bits if dtype else None, dtype.name if dtype else "this type")
     setattr(var, field, parsed.value)
     for code, severity, message in parsed.notes:
-        report.add(code, severity, f"{entry.key}={entry.value}: {message}", entry.line, entry.value_col)
+        report.add(code, severity, f"{entry.key}: {message}", entry.line, entry.value_col)
     if parsed.comment is not None:
         key = OBJECT_KEYS[normalize(entry.key)][0]
         var.comments = {**var.comments, key: [*var.comments.get(key, []), parsed.comment]}

@@ -1,0 +1,73 @@
+"""`cantools-od lint`: check files, print findings, optionally fix what is safe to fix."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import click
+
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device
+
+
+def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
+    return tuple(code.strip().upper() for value in values for code in value.split(",") if code.strip())
+
+
+@click.command(name="lint")
+@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.option(
+    "--format", "fmt", type=click.Choice(["text", "json", "sarif", "github"]), default="text", show_default=True
+)
+@click.option("--select", multiple=True, help="Only these codes or code prefixes (comma-separated).")
+@click.option("--ignore", multiple=True, help="Skip these codes or code prefixes (comma-separated).")
+@click.option("--fix", is_flag=True, help="Apply safe fixes in place; only the touched lines change.")
+@click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
+@click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")
+@click.option("--network", is_flag=True, help="Also check the files together as one network (DCFs).")
+def command(
+    files: tuple[str, ...],
+    fmt: str,
+    select: tuple[str, ...],
+    ignore: tuple[str, ...],
+    fix: bool,
+    can_fd: bool,
+    node_id: int | None,
+    network: bool,
+) -> None:
+    """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
+    from ..api import save
+    from ..lint import LintOptions, has_errors, lint, load_selection
+    from ..lint import output
+    from ..lint.network import lint_network
+
+    try:
+        selection = load_selection(Path.cwd()).merged(_codes(select), _codes(ignore))
+    except ValueError as error:
+        click.echo(f"error: configuration: {error}", err=True)
+        sys.exit(EXIT_USAGE)
+    options = LintOptions(can_fd=can_fd, node_id=node_id)
+    findings = []
+    devices = []
+    for name in files:
+        device = read_device(name, node_id)
+        result = lint(device, options, selection)
+        if fix and any(f.fix is not None and f.fix.safe for f in result):
+            for finding in result:
+                if finding.fix is not None and finding.fix.safe:
+                    finding.fix.apply(device)
+            save(device, name)
+            device = read_device(name, node_id)
+            result = lint(device, options, selection)
+        devices.append(device)
+        findings.extend(result)
+    if network:
+        findings.extend(f for f in lint_network(devices, options) if selection.enabled(f.code, f.location.file))
+    render = {
+        "text": lambda: output.text(findings, len(files)),
+        "json": lambda: output.as_json(findings),
+        "sarif": lambda: output.sarif(findings),
+        "github": lambda: output.github(findings),
+    }[fmt]
+    click.echo(render(), nl=False)
+    sys.exit(EXIT_FINDINGS if has_errors(findings) else EXIT_OK)

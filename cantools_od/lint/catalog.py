@@ -1,0 +1,14 @@
+"""Imports every rule family so that RULES is complete."""
+
+from __future__ import annotations
+
+import importlib
+from functools import cache
+
+FAMILIES = ("reader", "structure", "objlists", "values", "identity", "pdo", "cobid", "portability")
+
+
+@cache
+def load() -> None:
+    for family in FAMILIES:
+        importlib.import_module(f"{__package__}.{family}")

@@ -1,0 +1,3 @@
+"""Rule family: cobid."""
+
+from __future__ import annotations

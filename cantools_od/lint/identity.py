@@ -1,0 +1,3 @@
+"""Rule family: identity."""
+
+from __future__ import annotations

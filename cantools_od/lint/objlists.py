@@ -1,0 +1,3 @@
+"""Rule family: objlists."""
+
+from __future__ import annotations

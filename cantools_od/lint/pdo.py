@@ -1,0 +1,3 @@
+"""Rule family: pdo."""
+
+from __future__ import annotations

@@ -1,0 +1,3 @@
+"""Rule family: portability."""
+
+from __future__ import annotations

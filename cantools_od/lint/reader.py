@@ -1,0 +1,93 @@
+"""Codes the reader reports while it reads a file (see cantools_od/eds)."""
+
+from __future__ import annotations
+
+from ..model import Severity
+from .rules import declare
+
+E, W = Severity.ERROR, Severity.WARNING
+
+declare(
+    "EDS002",
+    W,
+    "Duplicate section or key",
+    """
+A section or key appears twice. CiA 306 files are INI files, where names are unique; tools
+disagree on which copy counts. cantools-od merges repeated sections and keeps the last value
+of a repeated key.""",
+    "[1000]\nParameterName=Device type\nParameterName=Device kind",
+)
+declare(
+    "EDS030",
+    E,
+    "Value not valid for its data type",
+    """
+A value (DefaultValue, ParameterValue, LowLimit, HighLimit, or a number in an info section)
+cannot be read as its data type: not a number, an invalid octal number, a formula other than
+`$NODEID` plus constants, hex digits that are not byte pairs, a REAL out of range. The text is
+kept as it is.""",
+    "[2000]\nDataType=0x0005\nDefaultValue=twelve",
+)
+declare(
+    "EDS032",
+    W,
+    "Value written in a non-portable form",
+    """
+CiA 306 does not define this form, and peer tools read it differently: octal numbers (python-
+canopen drops them), C suffixes such as `LL`, two's-complement hex for negative limits (lely
+rejects it), an inline comment after a value (CiA 306 has none), blank-separated hex bytes.""",
+    "DefaultValue=0x3ED ; prevent homing",
+)
+declare(
+    "EDS033",
+    W,
+    "Non-portable $NODEID formula",
+    """
+CiA 306 writes `$NODEID` first, in upper case, followed by `+` terms. `0x180+$NODEID` is
+rejected by lely; `$NODEID+0x100+0x80` is read as one term by python-canopen and lely;
+lower-case `$nodeid` is not accepted by every tool. Subtracting from `$NODEID` is an error.""",
+    "DefaultValue=0x180+$NODEID",
+)
+declare(
+    "EDS100",
+    W,
+    "File is not UTF-8",
+    """
+The file contains bytes that are not UTF-8; it was read as Windows-1252 (or Latin-1). Other
+tools may read those characters differently. Save the file as ASCII or UTF-8.""",
+)
+declare(
+    "EDS101",
+    E,
+    "Line is not an entry",
+    """
+Inside a section every line is `key=value`, a `;` comment or blank. This line is none of them
+(or stands before the first section) and is ignored.""",
+    "[1000]\nParameterName Device type",
+)
+declare(
+    "EDS102",
+    E,
+    "Section header without ']'",
+    """
+A line starting with `[` must end its section name with `]`.""",
+    "[1000\nParameterName=Device type",
+)
+declare(
+    "EDS103",
+    E,
+    "Sub-object section without its object",
+    """
+A `[<index>sub<n>]` section exists, but `[<index>]` does not (or the sub-index is above FEh).
+The section is kept as text, but no tool can use it.""",
+    "[2000sub1]\nParameterName=Orphan",
+)
+declare(
+    "EDS104",
+    E,
+    "Bad [xxxxName]/[xxxxValue]/[xxxxDenotation]/[xxxxObjectLinks] section",
+    """
+Such a section needs its object, and the first three need CompactSubObj on it; keys are
+decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) counts them.""",
+    "[2000Name]\nNrOfEntries=2\n1=First",
+)

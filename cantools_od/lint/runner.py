@@ -1,0 +1,51 @@
+"""Runs the rule catalogue over a device and filters by selection and suppressions."""
+
+from __future__ import annotations
+
+from ..model import Device, Severity
+from . import catalog
+from .config import Selection
+from .rules import RULES, Context, Finding, LintOptions
+from .suppress import Suppressions
+
+_ORDER = {Severity.ERROR: 0, Severity.WARNING: 1, Severity.INFO: 2}
+
+
+def lint(device: Device, options: LintOptions | None = None, selection: Selection | None = None) -> list[Finding]:
+    """Every enabled finding for one device, in file order."""
+    catalog.load()
+    options = options or LintOptions()
+    selection = selection or Selection()
+    file = device.source
+    findings = [
+        Finding(d.code, d.severity, d.message, d.location)
+        for d in device.diagnostics
+        if selection.enabled(d.code, file)
+    ]
+    context = Context(device, options)
+    for rule in RULES.values():
+        if rule.check is None or not selection.enabled(rule.code, file):
+            continue
+        try:
+            findings.extend(f for f in rule.check(context) if selection.enabled(f.code, file))
+        except Exception as error:  # a rule's bug must not hide every other finding
+            findings.append(
+                Finding(
+                    "LNT001",
+                    Severity.ERROR,
+                    f"rule {rule.code} failed: {type(error).__name__}: {error}",
+                    context.at(None),
+                )
+            )
+    suppressions = Suppressions(device)
+    kept = [f for f in findings if not suppressions.silenced(f.code, f.location.line)]
+    return sorted(set(kept), key=_sort_key)
+
+
+def _sort_key(finding: Finding) -> tuple[str, int, int, str, str]:
+    where = finding.location
+    return (where.file, where.line, where.column, finding.code, finding.message)
+
+
+def has_errors(findings: list[Finding]) -> bool:
+    return any(f.severity is Severity.ERROR for f in findings)

@@ -1,0 +1,3 @@
+"""Rule family: structure."""
+
+from __future__ import annotations

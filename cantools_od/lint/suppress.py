@@ -1,0 +1,62 @@
+"""In-file suppression: a comment line `; cantools-od: ignore CODE[,CODE]` directly above a
+section header silences those codes in the whole section; above a key, on that key's line."""
+
+from __future__ import annotations
+
+import re
+
+from ..model import Device, Section
+
+_DIRECTIVE = re.compile(r"[;#]\s*cantools-od\s*:\s*ignore\s+([A-Za-z0-9_, ]+)", re.IGNORECASE)
+
+
+def _codes(comments: list[str]) -> set[str]:
+    found: set[str] = set()
+    for comment in comments:
+        match = _DIRECTIVE.match(comment)
+        if match:
+            found.update(code.strip().upper() for code in match.group(1).split(",") if code.strip())
+    return found
+
+
+def _sections(device: Device) -> list[Section]:
+    parts: list[Section] = [device.file_info, device.device_info]
+    for optional in (
+        device.dummy_usage,
+        device.comments,
+        device.commissioning,
+        device.mandatory_objects,
+        device.optional_objects,
+        device.manufacturer_objects,
+    ):
+        if optional is not None:
+            parts.append(optional)
+    for obj in device.objects.values():
+        parts.append(obj)
+        parts.extend(obj.subs.values())
+    parts.extend(device.module_sections)
+    parts.extend(device.other_sections)
+    return parts
+
+
+class Suppressions:
+    """Line number → codes silenced there."""
+
+    def __init__(self, device: Device) -> None:
+        self.by_line: dict[int, set[str]] = {}
+        for section in _sections(device):
+            origin = section.origin
+            if origin is None or not section.comments:
+                continue
+            whole = _codes(section.comments.get("", []))
+            last = max([origin.line, *(where[0] for where in origin.keys.values())])
+            if whole:
+                for line in range(origin.line, last + 1):
+                    self.by_line.setdefault(line, set()).update(whole)
+            for key, where in origin.keys.items():
+                codes = _codes(section.comments.get(key, []))
+                if codes:
+                    self.by_line.setdefault(where[0], set()).update(codes)
+
+    def silenced(self, code: str, line: int) -> bool:
+        return code in self.by_line.get(line, ())

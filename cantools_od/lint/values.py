@@ -1,0 +1,3 @@
+"""Rule family: values."""
+
+from __future__ import annotations

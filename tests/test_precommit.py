@@ -1,0 +1,83 @@
+"""The pre-commit hooks, run for real with `pre-commit try-repo` against this checkout."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from support import EXAMPLES, ROOT
+
+BAD = """[1000]
+ParameterName=Device type
+DataType=0x0007
+AccessType=ro
+DefaultValue=0x00000000
+
+[2000]
+ParameterName=Speed
+DataType=0x0006
+AccessType=rw
+DefaultValue=fast
+"""
+
+
+def pre_commit() -> str:
+    found = shutil.which("pre-commit", path=str(Path(sys.executable).parent)) or shutil.which("pre-commit")
+    if found is None:
+        pytest.skip("pre-commit is not installed")
+    if not (ROOT / ".git").exists():
+        pytest.skip("try-repo needs this checkout to be a git repository")
+    return found
+
+
+def git(repo: Path, *args: str) -> None:
+    subprocess.run(["git", *args], cwd=repo, check=True, capture_output=True)
+
+
+@pytest.fixture(scope="module")
+def workspace(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str]]:
+    repo = tmp_path_factory.mktemp("user-repo")
+    git(repo, "init", "-q")
+    git(repo, "config", "user.email", "test@example.com")
+    git(repo, "config", "user.name", "Test")
+    shutil.copy(EXAMPLES / "io_device.eds", repo / "good.eds")
+    (repo / "bad.eds").write_text(BAD)
+    (repo / "messy.eds").write_bytes(b"[2000]\r\nParameterName=X\r\nAccessType=RO\r\nDataType=5\r\n")
+    git(repo, "add", ".")
+    env = dict(os.environ, PRE_COMMIT_HOME=str(tmp_path_factory.mktemp("pre-commit-home")), PRE_COMMIT_COLOR="never")
+    return repo, env
+
+
+def try_repo(workspace: tuple[Path, dict[str, str]], hook: str, *files: str) -> subprocess.CompletedProcess[str]:
+    repo, env = workspace
+    return subprocess.run(
+        [pre_commit(), "try-repo", str(ROOT), hook, "--files", *files],
+        cwd=repo, env=env, capture_output=True, text=True, timeout=900,
+    )  # fmt: skip
+
+
+def test_lint_hook_passes_a_good_file(workspace: tuple[Path, dict[str, str]]) -> None:
+    result = try_repo(workspace, "cantools-od-lint", "good.eds")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "Passed" in result.stdout
+
+
+def test_lint_hook_fails_a_bad_file_with_its_diagnostic(workspace: tuple[Path, dict[str, str]]) -> None:
+    result = try_repo(workspace, "cantools-od-lint", "bad.eds")
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert "Failed" in result.stdout
+    assert "bad.eds:11:14: error:" in result.stdout and "[EDS030]" in result.stdout
+
+
+def test_fmt_hook_rewrites_and_then_passes(workspace: tuple[Path, dict[str, str]]) -> None:
+    repo, _ = workspace
+    first = try_repo(workspace, "cantools-od-fmt", "messy.eds")
+    assert first.returncode == 1 and "files were modified by this hook" in first.stdout
+    assert (repo / "messy.eds").read_bytes() == b"[2000]\nParameterName=X\nDataType=0x0005\nAccessType=ro\n"
+    second = try_repo(workspace, "cantools-od-fmt", "messy.eds")
+    assert second.returncode == 0, second.stdout

@@ -4,10 +4,14 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device
+
+if TYPE_CHECKING:
+    from ..lint import Finding
 
 
 def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
@@ -38,7 +42,6 @@ def command(
     """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
     from ..api import save
     from ..lint import LintOptions, has_errors, lint, load_selection
-    from ..lint import output
     from ..lint.network import lint_network
 
     try:
@@ -47,7 +50,7 @@ def command(
         click.echo(f"error: configuration: {error}", err=True)
         sys.exit(EXIT_USAGE)
     options = LintOptions(can_fd=can_fd, node_id=node_id)
-    findings = []
+    findings: list[Finding] = []
     devices = []
     for name in files:
         device = read_device(name, node_id)
@@ -63,11 +66,17 @@ def command(
         findings.extend(result)
     if network:
         findings.extend(f for f in lint_network(devices, options) if selection.enabled(f.code, f.location.file))
-    render = {
-        "text": lambda: output.text(findings, len(files)),
-        "json": lambda: output.as_json(findings),
-        "sarif": lambda: output.sarif(findings),
-        "github": lambda: output.github(findings),
-    }[fmt]
-    click.echo(render(), nl=False)
+    click.echo(_render(fmt, findings, len(files)), nl=False)
     sys.exit(EXIT_FINDINGS if has_errors(findings) else EXIT_OK)
+
+
+def _render(fmt: str, findings: list[Finding], files: int) -> str:
+    from ..lint import output
+
+    if fmt == "json":
+        return output.as_json(findings)
+    if fmt == "sarif":
+        return output.sarif(findings)
+    if fmt == "github":
+        return output.github(findings)
+    return output.text(findings, files)

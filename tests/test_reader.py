@@ -254,3 +254,11 @@ def test_unreadable_path_raises_oserror(tmp_path: Path) -> None:
 @pytest.mark.parametrize("data", [b"", b"\x00\xff\xfe", b"[", b"=", b"[]\n=\n", b"[1000sub]\n", b"[FFFFsubFFF]\n"])
 def test_garbage_never_raises(data: bytes) -> None:
     loads(data)
+
+
+def test_orphan_sub_object_section_is_kept_and_reported() -> None:
+    device = loads(b"[2000sub1]\nParameterName=Orphan\nDataType=0x0005\n")
+    (diag,) = device.diagnostics
+    assert (diag.code, diag.location.line) == ("EDS103", 1)
+    assert device.other_sections[0].name == "2000sub1"
+    assert device.other_sections[0].entries["ParameterName"] == "Orphan"

@@ -1,0 +1,108 @@
+"""The linter's machinery: selection, configuration, suppression, output formats, exit codes."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from pathlib import Path
+
+from cantools_od import loads
+from cantools_od.lint import RULES, Selection, lint, load_selection
+from cantools_od.lint.catalog import load as load_catalog
+from cantools_od.lint.output import github, sarif
+
+from support import ROOT, cli_command
+
+BAD_VALUE = "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nDefaultValue=fast\n"
+
+
+def codes_of(text: str, selection: Selection | None = None) -> list[str]:
+    return [f.code for f in lint(loads(text.encode(), source="t.eds"), selection=selection)]
+
+
+def test_reader_findings_are_lint_findings() -> None:
+    assert "EDS030" in codes_of(BAD_VALUE)
+
+
+def test_select_and_ignore_by_code_and_prefix() -> None:
+    assert "EDS030" not in codes_of(BAD_VALUE, Selection(ignore=("EDS030",)))
+    assert "EDS030" not in codes_of(BAD_VALUE, Selection(ignore=("EDS",)))
+    assert set(codes_of(BAD_VALUE, Selection(select=("EDS03",)))) <= {"EDS030", "EDS031", "EDS032", "EDS033"}
+
+
+def test_suppression_comment_above_key_and_section() -> None:
+    above_key = BAD_VALUE.replace("DefaultValue", "; cantools-od: ignore EDS030\nDefaultValue")
+    assert "EDS030" not in codes_of(above_key)
+    above_section = "; cantools-od: ignore EDS030, EDS999\n" + BAD_VALUE
+    assert "EDS030" not in codes_of(above_section)
+    elsewhere = BAD_VALUE.replace("DataType", "; cantools-od: ignore EDS030\nDataType")
+    assert "EDS030" in codes_of(elsewhere)
+
+
+def test_pyproject_configuration(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text(
+        '[tool.cantools-od]\nignore = ["EDS032"]\nper-file-ignores = { "vendor/*.eds" = ["EDS030"] }\n'
+    )
+    (tmp_path / "vendor").mkdir()
+    selection = load_selection(tmp_path / "vendor")
+    assert not selection.enabled("EDS032", str(tmp_path / "x.eds"))
+    assert not selection.enabled("EDS030", str(tmp_path / "vendor" / "x.eds"))
+    assert selection.enabled("EDS030", str(tmp_path / "x.eds"))
+    assert selection.merged(("EDS03",), ()).enabled("EDS030", "x.eds")
+
+
+def run_lint(cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([*cli_command(), "lint", *args], cwd=cwd, capture_output=True, text=True, timeout=120)
+
+
+def test_cli_exit_codes_and_text(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.eds"
+    bad.write_text(BAD_VALUE)
+    result = run_lint(tmp_path, "bad.eds")
+    assert result.returncode == 1
+    assert "bad.eds:5:14: error: " in result.stdout and "[EDS030]" in result.stdout
+    assert "1 file checked:" in result.stdout
+    assert run_lint(tmp_path, "bad.eds", "--ignore", "EDS030", "--select", "EDS03").returncode == 0
+    assert run_lint(tmp_path, "missing.eds").returncode == 2
+    assert run_lint(tmp_path, "bad.eds", "--format", "xml").returncode == 2
+    (tmp_path / "pyproject.toml").write_text("[tool.cantools-od]\nignore = 3\n")
+    broken = run_lint(tmp_path, "bad.eds")
+    assert broken.returncode == 2 and "configuration" in broken.stderr
+
+
+def test_json_output_is_exactly_the_documented_shape(tmp_path: Path) -> None:
+    (tmp_path / "bad.eds").write_text(BAD_VALUE)
+    data = json.loads(run_lint(tmp_path, "bad.eds", "--format", "json").stdout)
+    assert isinstance(data, list) and data
+    for item in data:
+        assert set(item) - {"fix"} == {"file", "line", "column", "code", "severity", "message"}
+        assert item["severity"] in ("error", "warning", "info")
+    assert {"file": "bad.eds", "line": 5, "column": 14, "code": "EDS030"}.items() <= data[0].items()
+
+
+def test_sarif_and_github_outputs() -> None:
+    findings = lint(loads(BAD_VALUE.encode(), source="bad.eds"))
+    log = json.loads(sarif(findings))
+    assert log["version"] == "2.1.0"
+    run = log["runs"][0]
+    rule_ids = [rule["id"] for rule in run["tool"]["driver"]["rules"]]
+    result = next(r for r in run["results"] if r["ruleId"] == "EDS030")
+    assert rule_ids[result["ruleIndex"]] == "EDS030"
+    assert result["locations"][0]["physicalLocation"]["region"] == {"startLine": 5, "startColumn": 14}
+    assert "::error file=bad.eds,line=5,col=14,title=EDS030::" in github(findings)
+
+
+def test_every_rule_is_documented_and_tested() -> None:
+    load_catalog()
+    tests = "".join(p.read_text() for p in (ROOT / "tests").rglob("test_*.py"))
+    for code, rule in RULES.items():
+        assert rule.summary and len(rule.description) > 40, code
+        assert code in tests, f"no test mentions {code}"
+
+
+def test_rules_command_lists_and_explains() -> None:
+    listing = subprocess.run([*cli_command(), "rules"], capture_output=True, text=True)
+    assert listing.returncode == 0 and "EDS030" in listing.stdout
+    one = subprocess.run([*cli_command(), "rules", "eds030"], capture_output=True, text=True)
+    assert one.returncode == 0 and "Example:" in one.stdout
+    assert subprocess.run([*cli_command(), "rules", "NOPE1"], capture_output=True, text=True).returncode == 2

@@ -276,3 +276,11 @@ def load_pins(path: str | Path) -> dict[str, str]:
         pins[key] = name
     _check_pins(pins)
     return pins
+
+
+def pin_file_for(source: str | Path, explicit: str | Path | None = None) -> Path | None:
+    """The pin file to use for `source`: the one given, else `<source stem>.ids.toml` beside it."""
+    if explicit is not None:
+        return Path(explicit)
+    beside = Path(source).with_suffix(".ids.toml")
+    return beside if beside.is_file() else None

@@ -116,3 +116,19 @@ def test_pdo_text_draws_layouts(example: str) -> None:
     result = run("pdo", EXAMPLES / example)
     assert result.returncode == 0, result.stderr
     assert "TPDO1" in result.stdout and "+---+---+" in result.stdout and "$NODEID+0x180" in result.stdout
+
+
+def test_pinned_identifiers_survive_a_rename(tmp_path: Path) -> None:
+    eds = tmp_path / "drive.eds"
+    shutil.copy(EXAMPLES / "cia402_drive.eds", eds)
+    pins = run("ids", eds)
+    assert pins.returncode == 0 and '"6041" = "statusword"' in pins.stdout
+    (tmp_path / "drive.ids.toml").write_text(pins.stdout.replace('"6041" = "statusword"', '"6041" = "status"'))
+    eds.write_text(eds.read_text().replace("ParameterName=Statusword", "ParameterName=Status word (renamed)"))
+    data = json.loads(run("pdo", eds, "--format", "json", "--node-id", "1").stdout)
+    names = {e["index"]: e["identifier"] for p in data["pdos"] for e in p["entries"]}
+    assert names[0x6041] == "status"
+    assert names[0x6064] == "position_actual_value"
+    (tmp_path / "bad.toml").write_text("[identifiers]\n'6041' = 'Not Valid'\n")
+    bad = run("pdo", eds, "--pins", tmp_path / "bad.toml")
+    assert bad.returncode == 2 and "bad.toml" in bad.stderr and "Traceback" not in bad.stderr

@@ -4,10 +4,14 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 import click
 
 from ..model import Device, Diagnostic, Severity
+
+if TYPE_CHECKING:
+    from ..identifiers import Identifiers
 
 EXIT_OK = 0
 EXIT_FINDINGS = 1
@@ -45,3 +49,26 @@ def node_id_option(function: click.decorators.FC) -> click.decorators.FC:
         type=click.IntRange(1, 127),
         help="Node-ID that $NODEID stands for (1-127); a DCF's own NodeID otherwise.",
     )(function)
+
+
+def pins_option(function: click.decorators.FC) -> click.decorators.FC:
+    return click.option(
+        "--pins",
+        "pin_file",
+        type=click.Path(dir_okay=False),
+        help="Pin file of identifiers (from `cantools-od ids`); default: FILE's stem + .ids.toml beside it.",
+    )(function)
+
+
+def identifiers_for(device: Device, file: str, pin_file: str | None) -> Identifiers:
+    """The device's identifiers with its pins; a bad pin file exits with code 2."""
+    from ..identifiers import assign, load_pins, pin_file_for
+
+    path = pin_file_for(file, pin_file)
+    try:
+        return assign(device, load_pins(path) if path is not None else None)
+    except OSError as error:
+        click.echo(f"{path}: error: cannot read: {error.strerror or error}", err=True)
+    except ValueError as error:
+        click.echo(f"{path}: error: {error}", err=True)
+    sys.exit(EXIT_USAGE)

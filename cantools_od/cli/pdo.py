@@ -7,14 +7,24 @@ import sys
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, node_id_option, read_device, report
+from .common import (
+    EXIT_FINDINGS,
+    EXIT_OK,
+    EXIT_USAGE,
+    identifiers_for,
+    node_id_option,
+    pins_option,
+    read_device,
+    report,
+)
 
 
 @click.command(name="pdo")
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
 @node_id_option
-def command(file: str, fmt: str, node_id: int | None) -> None:
+@pins_option
+def command(file: str, fmt: str, node_id: int | None, pin_file: str | None) -> None:
     """Show the PDOs FILE configures, from its default (or DCF) values."""
     from ..model import NodeIdExpr
     from ..views.layout import draw
@@ -22,7 +32,7 @@ def command(file: str, fmt: str, node_id: int | None) -> None:
 
     device = read_device(file, node_id)
     errors = report(device.diagnostics)
-    pdos = pdo_map(device)
+    pdos = pdo_map(device, identifiers=identifiers_for(device, file, pin_file))
     if fmt == "json":
         symbolic = [p.name for p in pdos if isinstance(p.cob_id, NodeIdExpr)]
         if symbolic:

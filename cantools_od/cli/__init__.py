@@ -15,6 +15,7 @@ COMMANDS = {
     "fmt": ("fmt", "Rewrite files in canonical form."),
     "convert": ("convert", "Convert between EDS, DCF and JSON."),
     "pdo": ("pdo", "Show the PDO map with bit layouts."),
+    "gen": ("gen", "Generate C, Rust, Python and Markdown from an object dictionary."),
     "ids": ("ids", "Print the identifiers generated code uses, as a pin file."),
     "lint": ("lint", "Check EDS/DCF files against CiA 306/301 and PDO rules."),
     "rules": ("rules", "List the lint rules, or explain one."),

@@ -1,0 +1,234 @@
+"""The target-neutral view that every code and document generator renders.
+
+Everything a template needs is computed here: identifiers, resolved types and
+values, PDO layouts. Templates only lay it out. Values stay Python values;
+each target's renderer spells them in its own language.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..identifiers import Identifiers, assign
+from ..model import (
+    AccessType,
+    DataType,
+    Device,
+    Diagnostic,
+    Location,
+    NodeIdExpr,
+    Object,
+    ObjectKind,
+    RawValue,
+    Severity,
+    TimeValue,
+    Value,
+    ValueKind,
+    Variable,
+)
+from .pdo import Pdo, pdo_map
+
+
+@dataclass(frozen=True)
+class EntryView:
+    """One value-carrying entry: a VAR (sub-index 0) or a sub-object."""
+
+    index: int
+    subindex: int
+    name: str
+    member: str | None  # identifier within the object; None for a VAR
+    flat: str  # identifier across the device
+    data_type: DataType | None
+    access: AccessType | None
+    pdo_mappable: bool
+    default: Value | None  # ParameterValue else DefaultValue, `$NODEID` kept symbolic
+    low_limit: int | float | None
+    high_limit: int | float | None
+    implicit: bool
+    line: int  # where the file describes it, 0 when unknown
+
+    @property
+    def kind(self) -> ValueKind | None:
+        return self.data_type.kind if self.data_type else None
+
+    @property
+    def bits(self) -> int | None:
+        return self.data_type.bits if self.data_type else None
+
+    @property
+    def is_scalar(self) -> bool:
+        """A fixed-size number or boolean: it has a C/Rust scalar type."""
+        return self.data_type is not None and self.data_type.is_numeric
+
+    @property
+    def readable(self) -> bool:
+        return self.access is None or self.access.readable
+
+    @property
+    def writable(self) -> bool:
+        return self.access is not None and self.access.writable
+
+    @property
+    def nodeid_offset(self) -> int | None:
+        """The constant added to the node-ID when the default is `$NODEID+n`."""
+        return self.default.offset if isinstance(self.default, NodeIdExpr) else None
+
+    @property
+    def string_length(self) -> int | None:
+        """Bytes of a string or octet default (the size generated buffers reserve)."""
+        if isinstance(self.default, str):
+            return len(self.default.encode("utf-8"))
+        if isinstance(self.default, bytes):
+            return len(self.default)
+        return None
+
+
+@dataclass(frozen=True)
+class ObjectView:
+    index: int
+    name: str
+    identifier: str
+    kind: ObjectKind
+    entries: tuple[EntryView, ...]  # the VAR itself, or its sub-objects in sub-index order
+
+    @property
+    def is_var(self) -> bool:
+        return self.kind not in (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
+
+
+@dataclass(frozen=True)
+class PdoEntryView:
+    entry: EntryView | None  # None for a dummy entry
+    bit_offset: int
+    bit_length: int
+    data_type: DataType | None
+
+    @property
+    def is_dummy(self) -> bool:
+        return self.entry is None
+
+    @property
+    def identifier(self) -> str | None:
+        return self.entry.flat if self.entry else None
+
+    @property
+    def signed(self) -> bool:
+        return self.data_type is not None and self.data_type.kind is ValueKind.SIGNED
+
+
+@dataclass(frozen=True)
+class PdoView:
+    pdo: Pdo
+    entries: tuple[PdoEntryView, ...]
+
+    @property
+    def struct_name(self) -> str:
+        """`tpdo1`, `rpdo3`: the base of the generated struct, class and function names."""
+        return self.pdo.name.lower()
+
+    @property
+    def byte_length(self) -> int:
+        return (self.pdo.bit_length + 7) // 8
+
+    @property
+    def fields(self) -> tuple[PdoEntryView, ...]:
+        return tuple(e for e in self.entries if not e.is_dummy)
+
+
+@dataclass(frozen=True)
+class DeviceView:
+    name: str  # the output base name, an identifier
+    device: Device
+    identifiers: Identifiers
+    objects: tuple[ObjectView, ...]
+    pdos: tuple[PdoView, ...]
+    node_id: int | None
+    problems: tuple[Diagnostic, ...] = field(default=())
+
+    def entry(self, index: int, subindex: int) -> EntryView | None:
+        for obj in self.objects:
+            if obj.index == index:
+                return next((e for e in obj.entries if e.subindex == subindex), None)
+        return None
+
+
+def _number(value: Value | None) -> int | float | None:
+    if isinstance(value, bool):
+        return int(value)
+    return value if isinstance(value, (int, float)) else None
+
+
+def _entry(device: Device, ids: Identifiers, obj: Object, subindex: int, var: Variable) -> EntryView:
+    value = var.parameter_value if var.parameter_value is not None else var.default
+    origin = var.origin or obj.origin
+    return EntryView(
+        index=obj.index,
+        subindex=subindex,
+        name=var.name,
+        member=ids.member(obj.index, subindex) if obj.has_subs else None,
+        flat=ids.flat(obj.index, subindex),
+        data_type=device.entry_type(var, obj),
+        access=var.access,
+        pdo_mappable=bool(var.pdo_mapping),
+        default=None if isinstance(value, (RawValue, TimeValue)) else value,
+        low_limit=_number(var.low_limit),
+        high_limit=_number(var.high_limit),
+        implicit=getattr(var, "implicit", False),
+        line=origin.keys.get("ParameterName", (origin.line,))[0] if origin else 0,
+    )
+
+
+def build_view(
+    device: Device,
+    name: str,
+    node_id: int | None = None,
+    identifiers: Identifiers | None = None,
+    max_pdo_bits: int = 64,
+) -> DeviceView:
+    """The view of `device`; `problems` lists what makes generated PDO code impossible."""
+    ids = identifiers or assign(device)
+    objects: list[ObjectView] = []
+    by_key: dict[tuple[int, int], EntryView] = {}
+    for obj in device.objects.values():
+        if obj.kind in (ObjectKind.NULL, ObjectKind.DEFTYPE):
+            continue
+        pairs = list(obj.subs.items()) if obj.has_subs else [(0, obj)]
+        entries = tuple(_entry(device, ids, obj, sub, var) for sub, var in pairs)
+        for entry in entries:
+            by_key[(entry.index, entry.subindex)] = entry
+        objects.append(ObjectView(obj.index, obj.name, ids.object(obj.index), obj.kind, entries))
+    problems: list[Diagnostic] = []
+    pdos: list[PdoView] = []
+    for pdo in pdo_map(device, node_id, ids):
+        view_entries = []
+        for mapped in pdo.entries:
+            target = None if mapped.is_dummy else by_key.get((mapped.index, mapped.subindex))
+            problem = _pdo_problem(pdo, mapped.index, mapped.subindex, mapped.bit_length, target, mapped.is_dummy)
+            if problem:
+                problems.append(_diagnostic(device, pdo, problem))
+            view_entries.append(PdoEntryView(target, mapped.bit_offset, mapped.bit_length, mapped.data_type))
+        if pdo.bit_length > max_pdo_bits:
+            problems.append(_diagnostic(device, pdo, f"{pdo.bit_length} bits exceed the {max_pdo_bits}-bit frame"))
+        pdos.append(PdoView(pdo, tuple(view_entries)))
+    return DeviceView(name, device, ids, tuple(objects), tuple(pdos), node_id, tuple(problems))
+
+
+def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryView | None, dummy: bool) -> str:
+    where = f"{pdo.name} maps {index:04X}sub{subindex:X}"
+    if dummy:
+        return "" if 0 < bits <= 64 else f"{where} with {bits} bits"
+    if entry is None:
+        return f"{where}, which does not exist"
+    if not entry.is_scalar or entry.bits is None:
+        return f"{where}, whose type {entry.data_type.name if entry.data_type else 'is unknown'} has no fixed size"
+    if bits != entry.bits:
+        return (
+            f"{where} with {bits} bits, but its type {entry.data_type.name if entry.data_type else ''} has {entry.bits}"
+        )
+    return ""
+
+
+def _diagnostic(device: Device, pdo: Pdo, message: str) -> Diagnostic:
+    obj = device.objects.get(pdo.map_index) or device.objects.get(pdo.comm_index)
+    where = obj.origin.header() if obj is not None and obj.origin is not None else Location(file=device.source)
+    return Diagnostic(code="GEN001", severity=Severity.ERROR, message=f"cannot generate {message}", location=where)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import tempfile
 from pathlib import Path
@@ -23,15 +24,28 @@ def load(path: str | os.PathLike[str], node_id: int | None = None) -> Device:
 
 
 def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: Format | None = None) -> Device:
-    """Read EDS/DCF/JSON content; the format comes from `fmt`, else the content."""
+    """Read EDS/DCF/JSON content; the format comes from `fmt`, else the content.
+
+    EDS/DCF content never raises; JSON that is not a cantools-od model raises ValueError.
+    """
     raw = data.encode("utf-8") if isinstance(data, str) else data
-    if fmt == "json" or (fmt is None and raw.lstrip()[:1] == b"{"):
-        device = Device.model_validate_json(raw)
+    if fmt == "json" or (fmt is None and _is_json(raw)):
+        device = Device.model_validate_json(raw)  # ValueError when the JSON is not a model
         if node_id is not None:
             device.node_id = node_id
         return device
     dcf = True if fmt == "dcf" else None
     return read_bytes(raw, source, node_id=node_id, dcf=dcf)
+
+
+def _is_json(raw: bytes) -> bool:
+    if raw.lstrip()[:1] != b"{":
+        return False
+    try:
+        json.loads(raw)
+    except ValueError:
+        return False  # not JSON: an EDS that happens to start with "{", read with diagnostics
+    return True
 
 
 def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> bytes:

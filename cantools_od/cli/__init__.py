@@ -19,6 +19,7 @@ COMMANDS = {
     "ids": ("ids", "Print the identifiers generated code uses, as a pin file."),
     "lint": ("lint", "Check EDS/DCF files against CiA 306/301 and PDO rules."),
     "rules": ("rules", "List the lint rules, or explain one."),
+    "cmake-dir": ("cmake_dir", "Print the folder of the CMake package."),
 }
 
 

@@ -39,7 +39,8 @@ def command(
     pin_file: str | None,
 ) -> None:
     """Generate code and documents for FILE into OUTDIR. Files are rewritten only when
-    their content changes; nothing is written when FILE cannot be generated from."""
+    their content changes; nothing is written when FILE cannot be generated from
+    (exit 1, with the reasons as diagnostics)."""
     from ..api import write_if_changed
     from ..identifiers import is_identifier, pin_file_for
     from ..model import Severity
@@ -52,7 +53,7 @@ def command(
     device = read_device(file, node_id)
     identifiers = identifiers_for(device, file, pin_file)
     view = build_view(device, base, node_id, identifiers, max_pdo_bits=512 if can_fd else 64)
-    errors = [d for d in device.diagnostics if d.severity is Severity.ERROR]
+    # Read errors are shown; they fail the command only when they make generation impossible.
     report(device.diagnostics, minimum=Severity.ERROR)
     if view.problems:
         report(view.problems)
@@ -69,7 +70,7 @@ def command(
         inputs = [file, *([str(pins)] if pins else [])]
         rule = " ".join(_escape(str(p)) for p in outputs) + ": " + " ".join(_escape(i) for i in inputs) + "\n"
         write_if_changed(Path(depfile), rule.encode("utf-8"))
-    sys.exit(EXIT_FINDINGS if errors else EXIT_OK)
+    sys.exit(EXIT_OK)
 
 
 def _escape(path: str) -> str:

@@ -7,12 +7,29 @@ import re
 from ..model import Dialect
 from .ini import IniFile
 
+DIRECTIVE = re.compile(r"[;#]\s*cantools-od\s*:\s*dialect\s*[=:]?\s*([\w-]+)", re.IGNORECASE)
 _MAPPING_SECTION = re.compile(r"1[67ab][0-9a-f]{2}\Z", re.IGNORECASE)
 _NODEID_LAST = re.compile(r"\+\s*\$nodeid\s*\Z", re.IGNORECASE)
 
 
+def directive(text: str) -> Dialect | None:
+    """The dialect a `; cantools-od: dialect=<name>` comment names, if it is one."""
+    match = DIRECTIVE.match(text)
+    if match is None:
+        return None
+    try:
+        return Dialect(match.group(1).lower())
+    except ValueError:
+        return None
+
+
 def detect_dialect(parsed: IniFile) -> Dialect:
-    """Decided on evidence only a tool of that family writes; else plain CiA 306."""
+    """A directive comment at the top, else evidence only a tool of that family writes, else CiA 306."""
+    top = parsed.preamble_comments + (parsed.sections[0].comments if parsed.sections else [])
+    for comment in top:
+        named = directive(comment)
+        if named is not None:
+            return named
     for section in parsed.sections:
         name = section.name.lower()
         if _MAPPING_SECTION.match(name) and any(e.key.lower() == "compactsubobj" for e in section.entries):

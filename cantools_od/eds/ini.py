@@ -47,6 +47,12 @@ class IniFile:
 
 
 _EOL = re.compile(r"\r\n|\r|\n")
+_LINE_WITH_END = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")
+
+
+def split_lines(text: str) -> list[str]:
+    """Lines with their ends, broken exactly where the reader breaks them (CR, LF, CRLF)."""
+    return _LINE_WITH_END.findall(text)
 _HEADER = re.compile(r"([ \t]*)\[([^\]\r\n]*)(\]?)")
 
 
@@ -63,24 +69,27 @@ def parse(text: str) -> IniFile:
     preamble_stray: list[tuple[int, str]] = []
     sections: list[IniSection] = []
     pending: list[str] = []
+    line = 1  # counted here: lark counts only "\n", files also end lines with a lone "\r"
     for token in tree.children:
         assert isinstance(token, Token)
+        lines = _EOL.split(token)
+        first, line = line, line + len(lines) - 1
         if token.type == "PREAMBLE":
             trailing: list[str] = []
-            _split_body(token, 0, [], trailing, preamble_stray)
+            _split_body(lines, first, 0, [], trailing, preamble_stray)
             pending = trailing
             continue
-        match = _HEADER.match(token)
+        match = _HEADER.match(lines[0])
         assert match is not None
         section = IniSection(
             name=match.group(2).strip(),
-            line=token.line or 0,
+            line=first,
             column=len(match.group(1)) + 1,
             comments=pending,
-            header_text=token[: match.end()] + token[match.end() :].split("\n", 1)[0].rstrip("\r"),
+            header_text=lines[0],
             closed=bool(match.group(3)),
         )
-        _split_body(token, 1, section.entries, section.trailing, section.stray)
+        _split_body(lines, first, 1, section.entries, section.trailing, section.stray)
         # Comments after a section's last entry stand above the next header.
         pending, section.trailing = section.trailing, []
         sections.append(section)
@@ -88,14 +97,14 @@ def parse(text: str) -> IniFile:
         sections[-1].trailing = pending
     else:
         preamble_comments = pending
-    return IniFile(sections, preamble_comments, preamble_stray, text.count("\n") + 1)
+    return IniFile(sections, preamble_comments, preamble_stray, line)
 
 
 def _split_body(
-    body: Token, skip: int, entries: list[Entry], comments: list[str], stray: list[tuple[int, str]]
+    lines: list[str], first: int, skip: int, entries: list[Entry], comments: list[str], stray: list[tuple[int, str]]
 ) -> None:
-    line = (body.line or 1) - 1 + skip
-    for raw in _EOL.split(body)[skip:]:
+    line = first - 1 + skip
+    for raw in lines[skip:]:
         line += 1
         text = raw.strip(" \t")
         if not text:

@@ -11,7 +11,7 @@ from collections import Counter
 
 from ..model import Device
 from . import ini
-from .decode import decode
+from .decode import decode_as
 from .keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, normalize
 from .reader import read_bytes
 from .writer import OutSection, render, sections
@@ -63,10 +63,9 @@ def preserve(device: Device) -> bytes:
     after = {s.name: s for s in sections(device)}
     if _entries(before) == _entries(after):
         return original
-    text, fallback = decode(original)
-    lines = text.splitlines(keepends=True)
+    text, encoding, _ = decode_as(original)
+    lines = ini.split_lines(text)
     out = _apply(lines, _plan(ini.parse(text), lines, before, after))
-    encoding = "utf-8" if fallback is None else "cp1252"
     try:
         data = out.encode(encoding)
     except UnicodeEncodeError:
@@ -116,13 +115,17 @@ def _plan(
             for line in range(section.line, last_line + 1):
                 edits[line] = []
             continue
-        by_key = {_canonical_key(name, e.key): e for e in section.entries}
-        for key, entry in by_key.items():
-            raw = lines[entry.line - 1]
+        by_key: dict[str, list[ini.Entry]] = {}
+        for entry in section.entries:
+            by_key.setdefault(_canonical_key(name, entry.key), []).append(entry)
+        for key, entries in by_key.items():
+            last = entries[-1]  # the one that counts when a key is repeated
+            raw = lines[last.line - 1]
             if key not in new.entries:
-                edits[entry.line] = []
+                for entry in entries:
+                    edits[entry.line] = []
             elif new.entries[key] != old.entries.get(key):
-                edits[entry.line] = [raw[: entry.value_col - 1] + new.entries[key] + (_eol(raw) or eol)]
+                edits[last.line] = [raw[: last.value_col - 1] + new.entries[key] + (_eol(raw) or eol)]
         added = [f"{key}={text}{eol}" for key, text in new.entries.items() if key not in by_key]
         if added:
             kept = edits.get(last_line, [lines[last_line - 1]])

@@ -23,7 +23,7 @@ from ..model.assemble import assemble, field_defaults
 from . import ini, keys
 from .compact import apply_compact_sections, expand_compact_pdo, expand_compact_sub_objects
 from .decode import decode
-from .dialect import detect_dialect
+from .dialect import detect_dialect, directive
 from .report import Report
 from .sections import Collected, collect, raw_section
 from .typing import type_values
@@ -91,7 +91,9 @@ def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
         diagnostics=report.diagnostics,
     )
     if parsed.sections:
-        parsed.sections[0].comments = parsed.preamble_comments + parsed.sections[0].comments
+        # A dialect directive is file metadata (kept in `dialect`), not a comment on the first section.
+        top = parsed.preamble_comments + parsed.sections[0].comments
+        parsed.sections[0].comments = [c for c in top if directive(c) is None]
         device.trailing_comments = parsed.sections[-1].trailing
     elif parsed.preamble_comments:
         device.trailing_comments = parsed.preamble_comments
@@ -225,7 +227,7 @@ def _object_list(section: ini.IniSection, report: Report) -> ObjectList:
             index, _ = parse_int(text)
         except ValueError:
             index = None
-        if not isinstance(index, int):
+        if not isinstance(index, int) or not 0 <= index <= 0xFFFF:
             report.error("EDS030", f"[{section.name}] {position}={text}: not an object index", section.line)
             collected.extra[str(position)] = text
             continue

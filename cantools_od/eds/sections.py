@@ -34,6 +34,7 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
     if section.comments:
         collected.comments[""] = section.comments
     keys = origin.keys
+    spelled: dict[str, str] = {}  # canonical name → the spelling its earlier entry used
     for entry in section.entries:
         spec = table.get(normalize(entry.key))
         name = spec[0] if spec is not None else entry.key
@@ -44,8 +45,12 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
                 entry.line,
                 entry.key_col,
             )
-            collected.extra.pop(entry.key, None)
+            collected.extra.pop(spelled[name], None)  # the earlier value, whichever form it took
+            if spec is not None:
+                collected.fields.pop(spec[1], None)
+                collected.deferred.pop(spec[1], None)
         keys[name] = (entry.line, entry.key_col, entry.value_col)
+        spelled[name] = entry.key
         if entry.comments:
             collected.comments[name] = list(entry.comments)
         if spec is None:

@@ -191,8 +191,8 @@ def _parse(text: str, kind: ValueKind | None, bits: int | None, type_name: str) 
 def _parse_real(text: str, bits: int) -> float:
     if text.lstrip("-")[:2].lower() == "0x":
         pattern = int(text, 16)
-        if pattern >= 1 << bits:
-            raise ValueError(f"{text!r} is wider than {bits} bits")
+        if not 0 <= pattern < 1 << bits:
+            raise ValueError(f"{text!r} is not a {bits}-bit pattern")
         fmt = "<f" if bits == 32 else "<d"
         return float(struct.unpack(fmt, pattern.to_bytes(bits // 8, "little"))[0])
     try:

@@ -7,7 +7,9 @@ from typing import Any
 
 from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
 from ..model.device import Commissioning, DeviceInfo, FileInfo
+from . import ini
 from .compact import implicit_sub_name
+from .dialect import detect_dialect
 from .format import format_key, format_value
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
 
@@ -149,6 +151,10 @@ def render(out: list[OutSection], trailing: list[str], eol: str = "\n") -> str:
         for key, text in section.entries.items():
             lines.extend(section.comments.get(key, []))
             lines.append(f"{key}={text}")
+        for key, comments in section.comments.items():
+            if key and key not in section.entries:  # a commented key left empty keeps its comment
+                lines.extend(comments)
+                lines.append(f"{key}=")
         lines.append("")
     lines.extend(trailing)
     while lines and lines[-1] == "":
@@ -157,4 +163,8 @@ def render(out: list[OutSection], trailing: list[str], eol: str = "\n") -> str:
 
 
 def canonical_text(device: Device, dcf: bool = False) -> str:
-    return render(sections(device, dcf), device.trailing_comments)
+    text = render(sections(device, dcf), device.trailing_comments)
+    if detect_dialect(ini.parse(text)) is not device.dialect:
+        # Quoting and REAL forms depend on the dialect: say it where the text alone would mislead.
+        text = f"; cantools-od: dialect={device.dialect.value}\n" + text
+    return text

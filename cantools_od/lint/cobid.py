@@ -1,3 +1,465 @@
-"""Rule family: cobid."""
+"""Rule family: cobid. COB-IDs (CiA 301 §7.2-7.3) and the PDO communication parameters."""
 
 from __future__ import annotations
+
+from collections.abc import Iterator
+
+from ..model import NodeIdExpr, Severity
+from . import network  # noqa: F401  (registers COB011, the network rule)
+from .pdoread import (
+    EXTENDED,
+    PREDEFINED,
+    RTR,
+    RX,
+    TX,
+    VALID,
+    Cob,
+    Pdo,
+    Slot,
+    cob_entries,
+    collisions,
+    default_cob,
+    device_pdos,
+    first,
+    int_value,
+    node_ids,
+    producers,
+    slot,
+)
+from .rules import Context, Finding, rule
+
+E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
+U8, U16, U32 = 0x0005, 0x0006, 0x0007
+COMM_TYPES = {1: U32, 2: U8, 3: U16, 4: U8, 5: U16, 6: U8}
+TYPE_NAMES = {U8: "UNSIGNED8", U16: "UNSIGNED16", U32: "UNSIGNED32"}
+RESTRICTED = (
+    (0x000, 0x000), (0x001, 0x07F), (0x101, 0x180), (0x581, 0x5FF), (0x601, 0x67F), (0x6E0, 0x6FF), (0x701, 0x77F),
+    (0x780, 0x7FF),
+)  # fmt: skip
+
+
+def _pdo_cobs(ctx: Context) -> Iterator[tuple[Pdo, Cob]]:
+    for pdo in device_pdos(ctx):
+        cob = pdo.cob()
+        if cob is not None:
+            yield pdo, cob
+
+
+# --- COB-IDs -----------------------------------------------------------------------------------
+
+
+def _high_bits(cob: Cob, node_id: int) -> bool:
+    value = cob.at(node_id)
+    return not value & EXTENDED and bool(value & 0x1FFFF800)
+
+
+@rule(
+    "COB001",
+    E,
+    "COB-ID with bits 28-11 set in an 11-bit frame",
+    """
+Bit 29 of a COB-ID selects the frame format: 0 for an 11-bit CAN-ID, whose bits 28-11 must
+then be 0; 1 for a 29-bit CAN-ID. An 11-bit COB-ID with higher bits set is not a CAN-ID, and
+devices refuse it. Checked for PDOs, SYNC, TIME, EMCY and SDO COB-IDs.""",
+    "[1800sub1]\nDefaultValue=0x00000981",
+)
+def check_frame_bits(ctx: Context) -> Iterator[Finding]:
+    ids = node_ids(ctx)
+    for cob in cob_entries(ctx.device, device_pdos(ctx)):
+        node_id = first(cob, ids, _high_bits)
+        if node_id is not None:
+            yield ctx.report(
+                "COB001",
+                f"{cob.role}: COB-ID {cob.shown(node_id)} sets bits 28-11 of an 11-bit CAN-ID (bit 29 is 0)",
+                cob.location(ctx),
+            )
+
+
+def _valid_11bit(cob: Cob, node_id: int) -> int | None:
+    extended, can_id = cob.can_id(node_id)
+    return can_id if cob.valid(node_id) and not extended else None
+
+
+def _restricted(cob: Cob, node_id: int) -> bool:
+    can_id = _valid_11bit(cob, node_id)
+    return can_id is not None and any(low <= can_id <= high for low, high in RESTRICTED)
+
+
+def _service_id(cob: Cob, node_id: int) -> bool:
+    can_id = _valid_11bit(cob, node_id)
+    return can_id is not None and 0x080 <= can_id <= 0x100
+
+
+@rule(
+    "COB004",
+    E,
+    "Valid PDO with a restricted CAN-ID",
+    """
+CiA 301 reserves CAN-IDs for NMT (000h), SYNC/EMCY area below 080h, the SDO (581h-5FFh,
+601h-67Fh), NMT error control (701h-77Fh) and other services (101h-180h, 6E0h-6FFh, 780h-7FFh);
+a PDO must not use them. With `$NODEID` the COB-ID is checked for every node-ID the device may
+have, and the first one that fails is named.""",
+    "[1800sub1]\nDefaultValue=$NODEID+0x580",
+)
+def check_restricted(ctx: Context) -> Iterator[Finding]:
+    ids = node_ids(ctx)
+    for pdo, cob in _pdo_cobs(ctx):
+        node_id = first(cob, ids, _restricted)
+        if node_id is not None:
+            yield ctx.report(
+                "COB004",
+                f"{pdo.name}: COB-ID {cob.shown(node_id)} is a restricted CAN-ID",
+                cob.location(ctx),
+            )
+
+
+@rule(
+    "COB005",
+    W,
+    "Valid PDO on the SYNC, EMCY or TIME CAN-ID",
+    """
+CAN-IDs 080h (SYNC), 081h-0FFh (EMCY of the pre-defined connection set) and 100h (TIME) belong
+to those services by default. A PDO there collides as soon as a node uses them, and its high
+priority starves other traffic.""",
+    "[1800sub1]\nDefaultValue=0x00000090",
+)
+def check_service_ids(ctx: Context) -> Iterator[Finding]:
+    ids = node_ids(ctx)
+    for pdo, cob in _pdo_cobs(ctx):
+        node_id = first(cob, ids, _service_id)
+        if node_id is not None:
+            yield ctx.report(
+                "COB005",
+                f"{pdo.name}: COB-ID {cob.shown(node_id)} is the CAN-ID of SYNC, EMCY or TIME",
+                cob.location(ctx),
+            )
+
+
+def _predefined(ctx: Context) -> Iterator[tuple[Cob, int]]:
+    """Default COB-IDs that CiA 301's pre-defined connection set fixes, with their base."""
+    for pdo in device_pdos(ctx):
+        if pdo.number <= 4:
+            cob = default_cob(pdo.comm_slot(1), pdo.name)
+            if cob is not None:
+                yield cob, PREDEFINED[pdo.direction][pdo.number - 1]
+    for index, subindex, role, base in ((0x1014, 0, "EMCY", 0x80), (0x1200, 1, "SDO server 1200h (rx)", 0x600)):
+        cob = default_cob(slot(ctx.device, index, subindex), role)
+        if cob is not None:
+            yield cob, base
+    cob = default_cob(slot(ctx.device, 0x1200, 2), "SDO server 1200h (tx)")
+    if cob is not None:
+        yield cob, 0x580
+
+
+@rule(
+    "COB006",
+    W,
+    "Default COB-ID is not the pre-defined `$NODEID+...`",
+    """
+CiA 301's pre-defined connection set gives EMCY (80h), the default SDO server (600h/580h) and
+PDOs 1-4 (RPDO 200h/300h/400h/500h, TPDO 180h/280h/380h/480h) COB-IDs of base + node-ID. An EDS
+describes every node of its kind, so it writes them as `$NODEID+0x180`: a literal such as
+`0x181` fits one node-ID only, and another base breaks the convention masters rely on.
+A disabled PDO without CAN-ID (0x80000000) is accepted. Not checked in DCFs.""",
+    "[1800sub1]\nParameterName=COB-ID used by TPDO\nDefaultValue=0x181",
+)
+def check_predefined(ctx: Context) -> Iterator[Finding]:
+    if ctx.device.is_dcf:
+        return
+    for cob, base in _predefined(ctx):
+        value = cob.value
+        if isinstance(value, NodeIdExpr):
+            if value.offset & VALID or value.offset & ~RTR == base:
+                continue
+            problem = f"{value.canonical()} is not the pre-defined $NODEID+0x{base:X}"
+        elif value & VALID and not value & 0x1FFFFFFF:
+            continue
+        else:
+            wanted = NodeIdExpr(offset=(value & (VALID | RTR)) | base).canonical()
+            problem = f"0x{value:X} fits one node-ID only; write {wanted}"
+        yield ctx.report("COB006", f"{cob.role}: default COB-ID {problem}", cob.location(ctx))
+
+
+@rule(
+    "COB007",
+    W,
+    "PDO 5 or higher valid by default",
+    """
+The pre-defined connection set ends at PDO 4; PDOs 5 to 512 have no default CAN-ID, so their
+default COB-ID should be invalid (bit 31 set, e.g. 0x80000000) until a master assigns one.
+`$NODEID` there is legal CiA 306, but CANopenNode rebases only PDOs 1-4, so firmware and EDS
+then disagree. Not checked in DCFs.""",
+    "[1404sub1]\nParameterName=COB-ID used by RPDO\nDefaultValue=$NODEID+0x600",
+)
+def check_extra_pdos_invalid(ctx: Context) -> Iterator[Finding]:
+    if ctx.device.is_dcf:
+        return
+    for pdo in device_pdos(ctx):
+        cob = default_cob(pdo.comm_slot(1), pdo.name) if pdo.number > 4 else None
+        if cob is not None and not cob.at(1) & VALID:
+            yield ctx.report(
+                "COB007",
+                f"{pdo.name}: default COB-ID {cob.written} is valid; PDOs above 4 have no "
+                "pre-defined CAN-ID (set bit 31)",
+                cob.location(ctx),
+            )
+
+
+def _pair(first_cob: Cob, second: Cob, node_id: int) -> str:
+    where = f" for node-ID {node_id}" if first_cob.symbolic or second.symbolic else ""
+    return f"{first_cob.role} and {second.role} both use CAN-ID {second.describe(node_id)}{where}"
+
+
+@rule(
+    "COB009",
+    E,
+    "Two producers of this device share a CAN-ID",
+    """
+Each CAN-ID has exactly one producer on the bus. Two valid TPDOs of one device, or a TPDO and
+another message the device sends (EMCY, SDO server response, SDO client request, SYNC or TIME
+when produced, NMT error control at 700h + node-ID), on one CAN-ID collide: arbitration fails
+and receivers mix up the data. `$NODEID` COB-IDs are compared for every node-ID the device may
+have.""",
+    "[1800sub1]\nDefaultValue=$NODEID+0x180\n[1801sub1]\nDefaultValue=0x181",
+)
+def check_own_collisions(ctx: Context) -> Iterator[Finding]:
+    cobs = producers(ctx.device, device_pdos(ctx))
+    for earlier, later, node_id in collisions(cobs, node_ids(ctx)):
+        located = later if later.slot is not None else earlier
+        yield ctx.report("COB009", _pair(earlier, later, node_id), located.location(ctx))
+
+
+@rule(
+    "COB010",
+    INFO,
+    "Two RPDOs share a CAN-ID",
+    """
+Two valid RPDOs with one CAN-ID both receive every frame of that producer. CiA 301 allows it
+(one TPDO feeding several mappings, or a broadcast to several nodes); it is reported so that it
+is a decision, not an accident.""",
+    "[1400sub1]\nDefaultValue=0x201\n[1401sub1]\nDefaultValue=0x201",
+)
+def check_shared_rpdo_ids(ctx: Context) -> Iterator[Finding]:
+    cobs = [cob for pdo, cob in _pdo_cobs(ctx) if pdo.direction == RX]
+    for earlier, later, node_id in collisions(cobs, node_ids(ctx)):
+        yield ctx.report("COB010", _pair(earlier, later, node_id), later.location(ctx))
+
+
+# --- communication record ----------------------------------------------------------------------
+
+
+def _comm_subs(ctx: Context) -> Iterator[tuple[Pdo, Slot]]:
+    for pdo in device_pdos(ctx):
+        if pdo.comm is not None and pdo.comm.has_subs:
+            for subindex, sub in pdo.comm.subs.items():
+                yield pdo, Slot(pdo.comm, subindex, sub)
+
+
+@rule(
+    "PDO010",
+    E,
+    "Communication record sub0 below its highest sub-index",
+    """
+Sub0 of a PDO communication record holds the highest sub-index the record supports (2..6).
+Sub-objects above it do not exist for an SDO client, so an inhibit time or event timer
+described there is never used.""",
+    "[1800sub0]\nDefaultValue=3\n[1800sub5]\nParameterName=Event timer",
+)
+def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
+    for pdo in device_pdos(ctx):
+        count_slot = pdo.comm_slot(0)
+        highest = pdo.comm_int(0)
+        if pdo.comm is None or count_slot is None or highest is None:
+            continue
+        above = [s for s in pdo.comm.subs if s > highest]
+        if above:
+            yield ctx.report(
+                "PDO010",
+                f"{pdo.name}: {pdo.comm.index:04X}sub0 is {highest}, but sub{max(above)} is described",
+                count_slot.location(ctx),
+            )
+
+
+@rule(
+    "PDO011",
+    W,
+    "Inhibit time or SYNC start value set on an RPDO",
+    """
+Inhibit time (sub3) and SYNC start value (sub6) only govern transmission; an RPDO receives, so
+a non-zero default there has no effect and suggests the record was copied from a TPDO.""",
+    "[1400sub3]\nParameterName=Inhibit time\nDataType=0x0006\nDefaultValue=100",
+)
+def check_rpdo_tx_only(ctx: Context) -> Iterator[Finding]:
+    for pdo, found in _comm_subs(ctx):
+        value = int_value(found)
+        if pdo.direction == RX and found.subindex in (3, 6) and value:
+            what = "inhibit time" if found.subindex == 3 else "SYNC start value"
+            yield ctx.report("PDO011", f"{pdo.name}: {what} {value} has no effect on an RPDO", found.location(ctx))
+
+
+@rule(
+    "PDO012",
+    E,
+    "Communication record sub-object of the wrong data type",
+    """
+CiA 301 fixes the types of the PDO communication record: transmission type (sub2), the
+compatibility entry (sub4) and SYNC start value (sub6) are UNSIGNED8, the COB-ID (sub1) is
+UNSIGNED32, inhibit time (sub3) and event timer (sub5) are UNSIGNED16. Masters write them
+with these sizes; another size makes the SDO download fail.""",
+    "[1800sub5]\nParameterName=Event timer\nDataType=0x0007",
+)
+def check_comm_types(ctx: Context) -> Iterator[Finding]:
+    for pdo, found in _comm_subs(ctx):
+        expected = COMM_TYPES.get(found.subindex)  # sub0: EDS025 checks every record's
+        dtype = ctx.device.entry_type(found.var, found.owner)
+        if expected is not None and dtype is not None and dtype.index != expected:
+            yield ctx.report(
+                "PDO012",
+                f"{pdo.name}: {found.name} is {dtype.name}, expected {TYPE_NAMES[expected]}",
+                found.key_location(ctx, "DataType"),
+            )
+
+
+@rule(
+    "PDO013",
+    W,
+    "PDO communication parameter marked PDO-mappable",
+    """
+The sub-objects of a PDO communication record configure PDOs; CiA 301 does not map them into
+PDOs. PDOMapping=1 there invites a tool to offer them for mapping.""",
+    "[1800sub1]\nParameterName=COB-ID used by TPDO\nPDOMapping=1",
+)
+def check_comm_mappable(ctx: Context) -> Iterator[Finding]:
+    for pdo, found in _comm_subs(ctx):
+        if found.var.pdo_mapping and found.subindex > 0:
+            yield ctx.report(
+                "PDO013", f"{pdo.name}: {found.name} is marked PDO-mappable", found.key_location(ctx, "PDOMapping")
+            )
+
+
+@rule(
+    "PDO020",
+    E,
+    "Reserved transmission type 241-251",
+    """
+Transmission types 241 to 251 are reserved by CiA 301; a device answers an SDO download of one
+with an abort, and its behaviour with one as default is undefined.""",
+    "[1800sub2]\nParameterName=Transmission type\nDefaultValue=245",
+)
+def check_reserved_tt(ctx: Context) -> Iterator[Finding]:
+    for pdo in device_pdos(ctx):
+        found = pdo.comm_slot(2)
+        tt = int_value(found)
+        if found is not None and tt is not None and 241 <= tt <= 251:
+            yield ctx.report("PDO020", f"{pdo.name}: transmission type {tt} is reserved", found.location(ctx))
+
+
+@rule(
+    "PDO021",
+    E,
+    "RTR-only transmission type 252/253 on an RPDO",
+    """
+Transmission types 252 (synchronous, RTR only) and 253 (asynchronous, RTR only) describe when a
+TPDO answers a remote request; CiA 301 does not define them for an RPDO.""",
+    "[1400sub2]\nParameterName=Transmission type\nDefaultValue=253",
+)
+def check_rpdo_rtr(ctx: Context) -> Iterator[Finding]:
+    for pdo in device_pdos(ctx):
+        found = pdo.comm_slot(2)
+        tt = int_value(found)
+        if pdo.direction == RX and found is not None and tt in (252, 253):
+            yield ctx.report("PDO021", f"{pdo.name}: transmission type {tt} is for TPDOs only", found.location(ctx))
+
+
+def _timing(ctx: Context) -> Iterator[tuple[Pdo, int, Slot | None, Slot | None, Slot | None]]:
+    """Each TPDO with a readable transmission type: (pdo, tt, inhibit, event timer, SYNC start)."""
+    for pdo in device_pdos(ctx):
+        tt = pdo.comm_int(2)
+        if pdo.direction == TX and tt is not None:
+            yield pdo, tt, pdo.comm_slot(3), pdo.comm_slot(5), pdo.comm_slot(6)
+
+
+@rule(
+    "PDO023",
+    INFO,
+    "Event-driven TPDO without an event timer",
+    """
+A TPDO with transmission type 254 or 255 is sent when the application or device profile
+signals an event, or when its event timer expires. With the event timer at 0 it is sent only on
+such events; if the mapped objects never raise one, the TPDO stays silent until a master sets a
+timer. Informational, for valid TPDOs that map something: whether the application raises events
+is not in the EDS.""",
+    "[1800sub2]\nDefaultValue=255\n[1800sub5]\nParameterName=Event timer\nDefaultValue=0",
+)
+def check_event_without_timer(ctx: Context) -> Iterator[Finding]:
+    for pdo, tt, _, timer, _ in _timing(ctx):
+        cob = pdo.cob()
+        active = cob is not None and cob.valid(1) and bool(pdo.mapped())
+        if tt in (254, 255) and timer is not None and int_value(timer) == 0 and active:
+            yield ctx.report(
+                "PDO023",
+                f"{pdo.name}: transmission type {tt} with event timer 0 is sent only on application events",
+                timer.location(ctx),
+            )
+
+
+@rule(
+    "PDO024",
+    W,
+    "SYNC start value on a TPDO that is not cyclic synchronous",
+    """
+The SYNC start value (sub6) picks the SYNC counter value at which a cyclic synchronous TPDO
+(transmission type 1-240) starts. For any other transmission type the device ignores it.""",
+    "[1800sub2]\nDefaultValue=255\n[1800sub6]\nParameterName=SYNC start value\nDefaultValue=2",
+)
+def check_sync_start(ctx: Context) -> Iterator[Finding]:
+    for pdo, tt, _, _, start in _timing(ctx):
+        value = int_value(start)
+        if start is not None and value and not 1 <= tt <= 240:
+            yield ctx.report(
+                "PDO024",
+                f"{pdo.name}: SYNC start value {value} has no effect with transmission type {tt}",
+                start.location(ctx),
+            )
+
+
+@rule(
+    "PDO032",
+    W,
+    "Event timer on a synchronous or RTR-only TPDO",
+    """
+The event timer (sub5, ms) triggers event-driven TPDOs (transmission type 254/255). A TPDO that
+is sent on SYNC (0-240) or on request (252/253) ignores it, so a non-zero value promises a
+period the device does not keep.""",
+    "[1800sub2]\nDefaultValue=1\n[1800sub5]\nParameterName=Event timer\nDefaultValue=100",
+)
+def check_timer_ignored(ctx: Context) -> Iterator[Finding]:
+    for pdo, tt, _, timer, _ in _timing(ctx):
+        value = int_value(timer)
+        if timer is not None and value and (tt <= 240 or tt in (252, 253)):
+            yield ctx.report(
+                "PDO032",
+                f"{pdo.name}: event timer {value} ms is ignored with transmission type {tt}",
+                timer.location(ctx),
+            )
+
+
+@rule(
+    "PDO033",
+    W,
+    "Event timer shorter than the inhibit time",
+    """
+The inhibit time (sub3) counts in 100 us, the event timer (sub5) in ms. When the event period is
+shorter than the inhibit time, the inhibit time wins and the TPDO is sent less often than the
+event timer says; often the units were confused.""",
+    "[1800sub3]\nDefaultValue=100\n[1800sub5]\nDefaultValue=5\n; 5 ms < 10 ms",
+)
+def check_timer_vs_inhibit(ctx: Context) -> Iterator[Finding]:
+    for pdo, tt, inhibit, timer, _ in _timing(ctx):
+        period, gap = int_value(timer), int_value(inhibit)
+        if timer is not None and period and gap and period * 10 < gap and tt in (254, 255):
+            yield ctx.report(
+                "PDO033",
+                f"{pdo.name}: event timer {period} ms is shorter than the inhibit time {gap / 10:g} ms",
+                timer.location(ctx),
+            )

@@ -1,10 +1,213 @@
-"""Rule family: checks across the nodes of one network (several DCFs)."""
+"""Rule family: network. Checks across the nodes of one network (several DCFs, `lint --network`)."""
 
 from __future__ import annotations
 
-from ..model import Device
-from .rules import Finding, LintOptions
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+from ..model import Device, Location, Severity
+from .pdoread import RTR, RX, TX, Cob, MapEntry, Pdo, cob_of, known_node_id, pdos, producers, slot, with_severity
+from .rules import Context, Finding, LintOptions, rule
+
+
+@rule(
+    "COB011",
+    Severity.ERROR,
+    "Network: node-IDs, CAN-ID producers, PDO layouts or SYNC producers disagree",
+    """
+Checked by `lint --network` over the DCFs of one network. Each node needs its own node-ID; each
+CAN-ID has one producer; an RPDO reads what the TPDO with its CAN-ID sends, so both must agree
+on the total length and on where each mapped object starts and ends; one node at most produces
+SYNC (1005h bit 30). Errors: shared node-IDs, shared producers, layouts that differ, several SYNC
+producers. Warnings: an RPDO no node sends, objects of one length but different data types, a
+node without a node-ID (its `$NODEID` COB-IDs are then skipped).""",
+    "; a.dcf\n[1800sub1]\nParameterValue=0x185\n; b.dcf\n[1801sub1]\nParameterValue=0x185",
+)
+def check_single_device(ctx: Context) -> Iterable[Finding]:
+    """COB011 needs the whole network: `lint_network` reports it, a single file has nothing to say."""
+    return ()
+
+
+@dataclass
+class _Node:
+    device: Device
+    ctx: Context
+    node_id: int | None
+    pdos: list[Pdo]
+
+    @property
+    def name(self) -> str:
+        return self.device.source or "<input>"
+
+    def resolves(self, cob: Cob) -> int | None:
+        """The node-ID to resolve `cob` with; None when it needs one this node does not have."""
+        if not cob.symbolic:
+            return 1
+        return self.node_id
+
+
+def _report(node: _Node, message: str, location: Location, severity: Severity = Severity.ERROR) -> Finding:
+    finding = node.ctx.report("COB011", message, location)
+    return finding if severity is Severity.ERROR else with_severity(finding, severity)
 
 
 def lint_network(devices: list[Device], options: LintOptions) -> list[Finding]:
-    return []
+    """Findings about the devices as one network, each located in the file at fault."""
+    nodes: list[_Node] = []
+    for device in devices:
+        node_id = known_node_id(device, options.node_id if device.node_id is None else None)
+        nodes.append(_Node(device, Context(device, options), node_id, pdos(device)))
+    findings = [*_node_ids(nodes)]
+    distinct = _distinct(nodes)
+    findings.extend(_shared_producers(distinct))
+    findings.extend(_consumers(distinct))
+    findings.extend(_sync_producers(nodes))
+    return findings
+
+
+def _node_id_location(node: _Node) -> Location:
+    return node.ctx.at(node.device.commissioning, "NodeID")
+
+
+def _node_ids(nodes: list[_Node]) -> Iterator[Finding]:
+    owner: dict[int, _Node] = {}
+    for node in nodes:
+        if node.node_id is None:
+            yield _report(
+                node,
+                "no node-ID (1-127): its $NODEID COB-IDs are not checked",
+                _node_id_location(node),
+                Severity.WARNING,
+            )
+        elif node.node_id in owner:
+            yield _report(
+                node,
+                f"node-ID {node.node_id} is also the node-ID of {owner[node.node_id].name}",
+                _node_id_location(node),
+            )
+        else:
+            owner[node.node_id] = node
+
+
+def _distinct(nodes: list[_Node]) -> list[_Node]:
+    """The nodes without a node-ID taken before: a shared node-ID is reported once, not per COB-ID."""
+    seen: set[int] = set()
+    kept = []
+    for node in nodes:
+        if node.node_id is None or node.node_id not in seen:
+            kept.append(node)
+        if node.node_id is not None:
+            seen.add(node.node_id)
+    return kept
+
+
+def _produced(nodes: list[_Node]) -> Iterator[tuple[_Node, Cob, tuple[bool, int]]]:
+    """Every valid COB-ID a node sends, resolved for its node-ID."""
+    for node in nodes:
+        for cob in producers(node.device, node.pdos):
+            if cob.role == "SYNC":  # several SYNC producers: `_sync_producers`
+                continue
+            node_id = node.resolves(cob)
+            if node_id is not None and cob.valid(node_id) and cob.can_id(node_id)[1]:
+                yield node, cob, cob.can_id(node_id)
+
+
+def _shared_producers(nodes: list[_Node]) -> Iterator[Finding]:
+    first: dict[tuple[bool, int], tuple[_Node, Cob]] = {}
+    for node, cob, can_id in _produced(nodes):
+        other = first.setdefault(can_id, (node, cob))
+        if other[0] is not node:
+            where = cob.location(node.ctx) if cob.slot is not None else node.ctx.at(None)
+            yield _report(
+                node,
+                f"{cob.role} sends CAN-ID {_hex(can_id)}, which {other[0].name} ({other[1].role}) sends too",
+                where,
+            )
+
+
+def _hex(can_id: tuple[bool, int]) -> str:
+    return f"{can_id[1]:08X}h (29-bit)" if can_id[0] else f"{can_id[1]:03X}h"
+
+
+def _consumers(nodes: list[_Node]) -> Iterator[Finding]:
+    senders: dict[tuple[bool, int], tuple[_Node, Cob]] = {}
+    for node, cob, can_id in _produced(nodes):
+        senders.setdefault(can_id, (node, cob))
+    tpdos = {(id(node), pdo.comm_index): pdo for node in nodes for pdo in node.pdos if pdo.direction == TX}
+    for node in nodes:
+        for pdo in node.pdos:
+            mine = pdo.cob() if pdo.direction == RX else None
+            node_id = node.resolves(mine) if mine is not None else None
+            if mine is None or node_id is None or not mine.valid(node_id) or not mine.can_id(node_id)[1]:
+                continue
+            can_id = mine.can_id(node_id)
+            sender = senders.get(can_id)
+            if sender is None:
+                message = f"{pdo.name} receives CAN-ID {_hex(can_id)}, which no node of the network sends"
+                yield _report(node, message, mine.location(node.ctx), Severity.WARNING)
+                continue
+            source, source_cob = sender
+            slot_ = source_cob.slot
+            producer = tpdos.get((id(source), slot_.owner.index)) if slot_ is not None else None
+            if producer is None:
+                message = f"{pdo.name} receives CAN-ID {_hex(can_id)}, which is {source.name}'s {source_cob.role}"
+                yield _report(node, message, mine.location(node.ctx))
+            else:
+                yield from _layout(node, pdo, source, producer)
+
+
+def _layout(node: _Node, rpdo: Pdo, source: _Node, tpdo: Pdo) -> Iterator[Finding]:
+    """An RPDO against the TPDO that feeds it: same total, each mapped object on a producer entry."""
+    theirs = f"{source.name} {tpdo.name}"
+    received, sent = rpdo.mapped(), tpdo.mapped()
+    total_in, total_out = sum(e.bits for e in received), sum(e.bits for e in sent)
+    count = rpdo.count_slot()
+    if total_in != total_out and count is not None:
+        message = f"{rpdo.name} maps {total_in} bits, but {theirs} sends {total_out} bits"
+        yield _report(node, message, count.location(node.ctx))
+        return
+    by_offset = {entry.offset: entry for entry in sent}
+    for entry in received:
+        if entry.is_dummy:
+            continue
+        match = by_offset.get(entry.offset)
+        if match is None or match.bits != entry.bits:
+            there = _describe(match) if match is not None else "no entry starts there"
+            message = f"{rpdo.name} maps {entry.target} at bits {_bits(entry)}, but {theirs} does not ({there})"
+            yield _report(node, message, entry.slot.location(node.ctx))
+            return
+        mine, their_type = _type_name(node.device, entry), _type_name(source.device, match)
+        if mine and their_type and mine != their_type:
+            message = (
+                f"{rpdo.name} receives {entry.target} as {mine}, but {theirs} sends {match.target} as {their_type}"
+            )
+            yield _report(node, message, entry.slot.location(node.ctx), Severity.WARNING)
+
+
+def _bits(entry: MapEntry) -> str:
+    return f"{entry.offset}-{entry.offset + entry.bits - 1}"
+
+
+def _describe(entry: MapEntry) -> str:
+    return f"it sends {entry.target} at bits {_bits(entry)}"
+
+
+def _type_name(device: Device, entry: MapEntry) -> str | None:
+    if entry.is_dummy:
+        return None
+    found = slot(device, entry.index, entry.subindex)
+    dtype = device.entry_type(found.var, found.owner) if found is not None else None
+    return dtype.name if dtype is not None else None
+
+
+def _sync_producers(nodes: list[_Node]) -> Iterator[Finding]:
+    first: _Node | None = None
+    for node in nodes:
+        cob = cob_of(slot(node.device, 0x1005, 0), "SYNC")
+        if cob is None or not isinstance(cob.value, int) or not cob.value & RTR:
+            continue
+        if first is None:
+            first = node
+        else:
+            message = f"SYNC producer (1005h bit 30), but {first.name} produces SYNC too"
+            yield _report(node, message, cob.location(node.ctx))

@@ -60,14 +60,35 @@ def python_string(text: str) -> str:
     return repr(text)
 
 
-_MARKDOWN_SPECIAL = re.compile(r"([\\`*_{}\[\]()#+\-.!|<>&~^$])")
+# Every ASCII punctuation CommonMark/GFM gives a meaning somewhere: emphasis and code (`*_~``), links and
+# images (`[]()!`), HTML and entities (`<>&`), block starts (`#+-=>.` and list numbers' `.`/`)`), table
+# cells (`|`), math on GitHub (`$^`), autolinks (`:` of a scheme, `@` of an e-mail, `.` of `www.`),
+# emoji (`:`). A backslash before any ASCII punctuation is a valid escape that renders the character itself.
+_MARKDOWN_SPECIAL = re.compile(r"[\\`*_{}\[\]()#+\-.!|<>&~^$:@=]")
+
+
+def _markdown_escape(match: re.Match[str]) -> str:
+    char, text, at = match.group(), match.string, match.start()
+    # Between two ASCII letters or digits, `-` and `_` mean nothing (an intraword `_` neither opens nor
+    # closes emphasis): left as they are, names such as "Pre-defined" and "io_device" stay readable.
+    if char in "-_" and 0 < at < len(text) - 1 and _word(text[at - 1]) and _word(text[at + 1]):
+        return char
+    return "\\" + char
+
+
+def _word(char: str) -> bool:
+    return char.isascii() and char.isalnum()
 
 
 def markdown_text(text: str) -> str:
-    """Inline Markdown: every punctuation that could mean something is escaped; no HTML passes."""
-    return _MARKDOWN_SPECIAL.sub(r"\\\1", _one_line(text))
+    """Inline Markdown that renders as `text`, literally: one line, punctuation escaped, no HTML or link.
+
+    Every backslash is escaped too, so every `|` is preceded by exactly one escaping backslash: a GFM
+    table never splits a cell at it.
+    """
+    return _MARKDOWN_SPECIAL.sub(_markdown_escape, _one_line(text))
 
 
 def markdown_cell(text: str) -> str:
-    """A GFM table cell: like markdown_text, and never empty-looking."""
-    return markdown_text(text)
+    """A GFM table cell: like markdown_text, and never empty-looking (an em dash stands for no text)."""
+    return markdown_text(text) or "\u2014"

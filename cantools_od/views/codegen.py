@@ -144,6 +144,7 @@ class DeviceView:
     pdos: tuple[PdoView, ...]
     node_id: int | None
     problems: tuple[Diagnostic, ...] = field(default=())
+    max_pdo_bits: int = 64  # the frame limit PDOs were checked against (512 with CAN FD)
 
     def entry(self, index: int, subindex: int) -> EntryView | None:
         for obj in self.objects:
@@ -208,9 +209,11 @@ def build_view(
                 problems.append(_diagnostic(device, pdo, problem))
             view_entries.append(PdoEntryView(target, mapped.bit_offset, mapped.bit_length, mapped.data_type))
         if pdo.bit_length > max_pdo_bits:
-            problems.append(_diagnostic(device, pdo, f"{pdo.bit_length} bits exceed the {max_pdo_bits}-bit frame"))
+            problems.append(
+                _diagnostic(device, pdo, f"{pdo.name}: its {pdo.bit_length} bits exceed the {max_pdo_bits}-bit frame")
+            )
         pdos.append(PdoView(pdo, tuple(view_entries)))
-    return DeviceView(name, device, ids, tuple(objects), tuple(pdos), node_id, tuple(problems))
+    return DeviceView(name, device, ids, tuple(objects), tuple(pdos), node_id, tuple(problems), max_pdo_bits)
 
 
 def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryView | None, dummy: bool) -> str:

@@ -60,10 +60,11 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> byt
     dcf = fmt == "dcf"
     if dcf and not device.is_dcf and device.node_id is None:
         raise ValueError("an EDS becomes a DCF for one node: give its node-ID")
-    if style == "preserve" and device._original is not None and dcf == device.is_dcf:
+    making_dcf = dcf and not device.is_dcf  # an EDS becomes a DCF: values are resolved, layout is new
+    if style == "preserve" and device._original is not None and not making_dcf:
         return preserve(device)
     # A DCF made from an EDS states its node-ID and the values resolved for it.
-    text = canonical_text(device, dcf and not device.is_dcf)
+    text = canonical_text(device, making_dcf)
     try:
         return text.encode("ascii")
     except UnicodeEncodeError:

@@ -53,6 +53,8 @@ _LINE_WITH_END = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")
 def split_lines(text: str) -> list[str]:
     """Lines with their ends, broken exactly where the reader breaks them (CR, LF, CRLF)."""
     return _LINE_WITH_END.findall(text)
+
+
 _HEADER = re.compile(r"([ \t]*)\[([^\]\r\n]*)(\]?)")
 
 

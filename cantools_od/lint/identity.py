@@ -1,3 +1,205 @@
-"""Rule family: identity."""
+"""Rule family: identity — mandatory objects, [DeviceInfo] against the object dictionary (cia306.md §4, §10)."""
 
 from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from ..eds.keys import BAUD_RATES
+from ..model import Device, Location, Severity, Value
+from .rules import Context, Finding, Fix, rule
+from .structure import present
+
+E, W = Severity.ERROR, Severity.WARNING
+
+_IDENTITY = ((1, "VendorNumber", "vendor_number"), (2, "ProductNumber", "product_number"),
+             (3, "RevisionNumber", "revision_number"))  # fmt: skip
+_PDO_RANGES = (("NrOfRXPDO", "nr_of_rx_pdo", 0x1400, "RPDO"), ("NrOfTXPDO", "nr_of_tx_pdo", 0x1800, "TPDO"))
+
+
+def plain_int(value: Value | None) -> int | None:
+    """An integer value, or None for anything else (booleans, `$NODEID` formulas, text)."""
+    return value if isinstance(value, int) and not isinstance(value, bool) else None
+
+
+@rule(
+    "EDS011",
+    E,
+    "Mandatory object missing",
+    """
+Every CANopen device implements 1000h (device type), 1001h (error register) and, since CiA 301
+v4.0, 1018h (identity object). Masters read them during boot-up to identify the device; a file
+without them cannot describe a conforming device.""",
+    "[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001\n; no [1018] section",
+)
+def mandatory_objects(ctx: Context) -> Iterator[Finding]:
+    listing = ctx.device.mandatory_objects
+    where = ctx.at(listing) if listing is not None else Location(file=ctx.device.source, line=1, column=1)
+    for index, name in ((0x1000, "device type"), (0x1001, "error register"), (0x1018, "identity object")):
+        if index not in ctx.device.objects:
+            yield ctx.report("EDS011", f"mandatory object {index:04X}h ({name}) is missing", where)
+
+
+@rule(
+    "EDS040",
+    E,
+    "[DeviceInfo] identity differs from 1018h",
+    """
+VendorNumber, ProductNumber and RevisionNumber in [DeviceInfo] repeat the DefaultValue of the
+identity object 1018h sub-indices 1, 2 and 3 (cia306.md §4). Masters and configuration tools
+compare one or the other with the device; a mismatch (CANopenEditor #226: RevisionNumber=0
+while 1018h sub3 = 0x00010000) makes them reject the right device or accept the wrong one.""",
+    "[DeviceInfo]\nRevisionNumber=0\n\n[1018sub3]\nParameterName=Revision number\nDataType=0x0007\n"
+    "AccessType=ro\nDefaultValue=0x00010000",
+)
+def identity(ctx: Context) -> Iterator[Finding]:
+    info, obj = ctx.device.device_info, ctx.device.objects.get(0x1018)
+    if obj is None:
+        return
+    for subindex, key, field in _IDENTITY:
+        sub = obj.subs.get(subindex)
+        stated, described = getattr(info, field), plain_int(sub.default) if sub is not None else None
+        if stated is None or described is None or stated == described:
+            continue
+        fix = Fix(f"set {key}=0x{described:08X} from 1018h sub{subindex}", True, _fix_identity(subindex, field))
+        message = f"{key}=0x{stated:08X} but 1018h sub{subindex} DefaultValue=0x{described:08X}"
+        yield ctx.report("EDS040", message, ctx.value_at(info, key), fix)
+
+
+def _fix_identity(subindex: int, field: str) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        obj = device.objects.get(0x1018)
+        sub = obj.subs.get(subindex) if obj is not None else None
+        value = plain_int(sub.default) if sub is not None else None
+        if value is not None:
+            setattr(device.device_info, field, value)
+
+    return apply
+
+
+@rule(
+    "EDS045",
+    E,
+    "LSS_SerialNumber differs from 1018h sub4",
+    """
+In a DCF, [DeviceComissioning] LSS_SerialNumber is the serial number of the configured device,
+which 1018h sub4 also states (cia306.md §10). LSS masters address the device by it; two
+different numbers cannot both be right. Not checked when either side is missing or 0 (not
+configured).""",
+    "[DeviceComissioning]\nLSS_SerialNumber=0x00000017\n\n[1018sub4]\nParameterName=Serial number\n"
+    "DataType=0x0007\nAccessType=ro\nParameterValue=0x00000018",
+)
+def serial_number(ctx: Context) -> Iterator[Finding]:
+    section, obj = ctx.device.commissioning, ctx.device.objects.get(0x1018)
+    sub = obj.subs.get(4) if obj is not None else None
+    if section is None or not section.lss_serial_number or sub is None:
+        return  # 0: not configured
+    described = plain_int(sub.value())
+    if described and described != section.lss_serial_number:
+        message = f"LSS_SerialNumber=0x{section.lss_serial_number:08X} but 1018h sub4 is 0x{described:08X}"
+        yield ctx.report("EDS045", message, ctx.value_at(section, "LSS_SerialNumber"))
+
+
+@rule(
+    "EDS041",
+    W,
+    "NrOfRXPDO/NrOfTXPDO differs from the PDOs present",
+    """
+NrOfRXPDO and NrOfTXPDO count the RPDO (1400h-15FFh) and TPDO (1800h-19FFh) communication
+objects the device has, the ones CompactPDO implies included. Tools size their PDO tables from
+these keys; a count that disagrees with the objects means a PDO is missing or the key is stale.""",
+    "[DeviceInfo]\nNrOfRXPDO=2\n\n[1400]\nParameterName=RPDO1 communication parameter\n...\n; no [1401]",
+)
+def pdo_counts(ctx: Context) -> Iterator[Finding]:
+    info = ctx.device.device_info
+    for key, field, base, kind in _PDO_RANGES:
+        stated = getattr(info, field)
+        present = sum(1 for index in ctx.device.objects if base <= index < base + 0x200)
+        if stated is not None and stated != present:
+            fix = Fix(f"set {key}={present}", False, _fix_pdo_count(field, base))
+            message = f"{key}={stated} but {present} {kind} communication object{'s' if present != 1 else ''}"
+            yield ctx.report("EDS041", message, ctx.value_at(info, key), fix)
+
+
+def _fix_pdo_count(field: str, base: int) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        setattr(device.device_info, field, sum(1 for index in device.objects if base <= index < base + 0x200))
+
+    return apply
+
+
+@rule(
+    "EDS042",
+    W,
+    "Granularity 0 with writable PDO mapping",
+    """
+`Granularity=0` states that the PDO mapping cannot be changed (cia306.md §4). Mapping objects
+(1600h-17FFh, 1A00h-1BFFh) with writable sub-objects say the opposite; configuration tools
+either refuse to remap or remap a device that rejects it.""",
+    "[DeviceInfo]\nGranularity=0\n\n[1A00sub0]\nParameterName=Number of mapped objects\nDataType=0x0005\nAccessType=rw",
+)
+def static_mapping(ctx: Context) -> Iterator[Finding]:
+    info = ctx.device.device_info
+    if info.granularity != 0:
+        return
+    writable = [
+        f"{index:04X}h"
+        for index, obj in ctx.device.objects.items()
+        if (0x1600 <= index <= 0x17FF or 0x1A00 <= index <= 0x1BFF)
+        and any(sub.access is not None and sub.access.writable for sub in obj.subs.values())
+    ]
+    if writable:
+        more = f" and {len(writable) - 3} more" if len(writable) > 3 else ""
+        message = f"Granularity=0 (static mapping) but mapping objects are writable: {', '.join(writable[:3])}{more}"
+        yield ctx.report("EDS042", message, ctx.value_at(info, "Granularity"))
+
+
+@rule(
+    "EDS046",
+    E,
+    "Granularity above 64",
+    """
+Granularity is the PDO mapping granularity in bits: 0 (mapping not modifiable) or 1..64 (cia306.md
+§4); a classic CAN frame holds 64 bits.""",
+    "[DeviceInfo]\nGranularity=128",
+)
+def granularity_range(ctx: Context) -> Iterator[Finding]:
+    info = ctx.device.device_info
+    if info.granularity is not None and not 0 <= info.granularity <= 64:
+        message = f"Granularity={info.granularity}: must be 0..64"
+        yield ctx.report("EDS046", message, ctx.value_at(info, "Granularity"))
+
+
+@rule(
+    "EDS043",
+    W,
+    "Commissioned baud rate not supported",
+    """
+[DeviceComissioning] Baudrate (kbit/s) is one of the rates [DeviceInfo] marks as supported with
+`BaudRate_<rate>=1`; otherwise the node is configured for a bit rate it cannot use.""",
+    "[DeviceInfo]\nBaudRate_250=1\nBaudRate_500=0\n\n[DeviceComissioning]\nNodeID=5\nBaudrate=500",
+)
+def commissioned_rate(ctx: Context) -> Iterator[Finding]:
+    section, rates = ctx.device.commissioning, ctx.device.device_info.baud_rates
+    if section is None or not section.baudrate or not any(rates.values()):
+        return
+    if not rates.get(section.baudrate):
+        supported = ", ".join(str(rate) for rate in sorted(rates) if rates[rate])
+        message = f"Baudrate={section.baudrate} kbit/s is not a supported rate ({supported})"
+        yield ctx.report("EDS043", message, ctx.value_at(section, "Baudrate"))
+
+
+@rule(
+    "EDS044",
+    W,
+    "No supported baud rate",
+    """
+[DeviceInfo] marks the bit rates the device supports with `BaudRate_10`, `_20`, `_50`, `_125`,
+`_250`, `_500`, `_800` and `_1000` (a missing key counts as 0). A device with none set cannot be
+put on any network; usually the keys are missing or misspelt (`Baudrate_500`).""",
+    "[DeviceInfo]\nVendorName=Example\nBaudRate_500=0",
+)
+def no_rates(ctx: Context) -> Iterator[Finding]:
+    info = ctx.device.device_info
+    if present(info) and not any(info.baud_rates.values()):
+        keys = ", ".join(f"BaudRate_{rate}" for rate in BAUD_RATES)
+        yield ctx.report("EDS044", f"none of {keys} is 1", ctx.at(info))

@@ -1,3 +1,351 @@
-"""Rule family: objlists."""
+"""Rule family: object lists — [MandatoryObjects], [OptionalObjects], [ManufacturerObjects] (cia306.md §6)."""
 
 from __future__ import annotations
+
+from collections.abc import Callable, Collection, Iterator
+
+from ..eds import keys
+from ..model import Device, Location, ObjectList, Severity
+from .rules import Context, Finding, Fix, rule
+
+E, W = Severity.ERROR, Severity.WARNING
+
+MANDATORY, OPTIONAL, MANUFACTURER = "MandatoryObjects", "OptionalObjects", "ManufacturerObjects"
+LISTS = {MANDATORY: "mandatory_objects", OPTIONAL: "optional_objects", MANUFACTURER: "manufacturer_objects"}
+MANDATORY_INDICES = (0x1000, 0x1001, 0x1018)
+
+
+def object_list(device: Device, name: str) -> ObjectList | None:
+    found: ObjectList | None = getattr(device, LISTS[name])
+    return found
+
+
+def home(index: int) -> str | None:
+    """The list an object belongs in by its index; None for data types (not listed)."""
+    if index < 0x1000:
+        return None
+    if index in MANDATORY_INDICES:
+        return MANDATORY
+    return MANUFACTURER if 0x2000 <= index <= 0x5FFF else OPTIONAL
+
+
+def listings(device: Device) -> Iterator[tuple[str, ObjectList, int, int]]:
+    """(list name, list, position, index) for every entry, in list and position order."""
+    for name in LISTS:
+        found = object_list(device, name)
+        if found is not None:
+            for position, index in sorted(found.entries.items()):
+                yield name, found, position, index
+
+
+def _entry_at(ctx: Context, found: ObjectList, position: int) -> Location:
+    return ctx.value_at(found, str(position))
+
+
+def _renumber(found: ObjectList, drop: Collection[int] = ()) -> None:
+    """Positions 1..n in the old order, without the dropped positions; the count follows when it was right."""
+    was_right = found.supported_objects == len(found.entries)
+    kept = [index for position, index in sorted(found.entries.items()) if position not in drop]
+    found.entries = {position: index for position, index in enumerate(kept, 1)}
+    if was_right:
+        found.supported_objects = len(found.entries)
+
+
+# ---- presence --------------------------------------------------------------------------------------------------
+
+
+@rule(
+    "EDS010",
+    E,
+    "Listed object has no section",
+    """
+Each entry of an object list names an object that the file describes in its own `[<index>]`
+section. A listed object without one (e.g. 6505h in a real drive EDS) makes tools fail to load
+the file or announce an object the device does not describe. A missing 1000h, 1001h or 1018h is
+reported by EDS011.""",
+    "[OptionalObjects]\nSupportedObjects=1\n1=0x6505\n; no [6505] section in the file",
+)
+def listed_absent(ctx: Context) -> Iterator[Finding]:
+    for name, found, position, index in listings(ctx.device):
+        if index not in ctx.device.objects and index not in MANDATORY_INDICES:  # those: EDS011
+            fix = Fix(f"remove 0x{index:04X} from [{name}]", False, _fix_unlist(name, index))
+            message = f"[{name}] {position}=0x{index:04X}: no [{index:04X}] section"
+            yield ctx.report("EDS010", message, _entry_at(ctx, found, position), fix)
+
+
+def _fix_unlist(name: str, index: int) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        found = object_list(device, name)
+        if found is not None:
+            _renumber(found, {p for p, i in found.entries.items() if i == index})
+
+    return apply
+
+
+@rule(
+    "EDS012",
+    E,
+    "Object section not listed",
+    """
+Every object section (except data types below 1000h) is listed in exactly one of the object
+lists: 1000h, 1001h and 1018h in [MandatoryObjects], 2000h-5FFFh in [ManufacturerObjects], all
+others in [OptionalObjects]. Tools that follow the lists (lely, Vector CANeds) ignore or reject
+unlisted objects; python-canopen imports every section, so the two disagree about the device.
+Objects implied by CompactPDO need not be listed.""",
+    "[ManufacturerObjects]\nSupportedObjects=0\n\n[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw",
+)
+def unlisted(ctx: Context) -> Iterator[Finding]:
+    listed = {index for _, _, _, index in listings(ctx.device)}
+    for index, obj in ctx.device.objects.items():
+        target = home(index)
+        if obj.implicit or target is None or index in listed:
+            continue
+        fix = Fix(f"add 0x{index:04X} to [{target}]", True, _fix_list(index))
+        yield ctx.report("EDS012", f"[{index:04X}] is in no object list; it belongs in [{target}]", ctx.at(obj), fix)
+
+
+def _fix_list(index: int) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        target = home(index)
+        if target is None or any(i == index for _, _, _, i in listings(device)):
+            return
+        found = _ensure(device, target)
+        was_right = found.supported_objects == len(found.entries)
+        found.entries = {**found.entries, max(found.entries, default=0) + 1: index}
+        if was_right:
+            found.supported_objects = len(found.entries)
+
+    return apply
+
+
+def _ensure(device: Device, name: str) -> ObjectList:
+    found = object_list(device, name)
+    if found is None:
+        found = ObjectList(supported_objects=0)
+        setattr(device, LISTS[name], found)
+    return found
+
+
+@rule(
+    "EDS019",
+    W,
+    "Object list section missing",
+    """
+An EDS has all three object lists, even when one is empty (`SupportedObjects=0`). Objects that
+a missing list would hold are reported as unlisted (EDS012); this rule reports the missing
+section itself.""",
+    "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n; no [OptionalObjects], "
+    "no [ManufacturerObjects]",
+)
+def missing_list(ctx: Context) -> Iterator[Finding]:
+    for name in LISTS:
+        if object_list(ctx.device, name) is None:
+            fix = Fix(f"add an empty [{name}]", True, _fix_missing(name))
+            where = Location(file=ctx.device.source, line=1, column=1)
+            yield ctx.report("EDS019", f"[{name}] is missing", where, fix)
+
+
+def _fix_missing(name: str) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        _ensure(device, name)
+
+    return apply
+
+
+# ---- placement -------------------------------------------------------------------------------------------------
+
+
+@rule(
+    "EDS013",
+    E,
+    "Mandatory and other object lists mixed up",
+    """
+[MandatoryObjects] lists exactly the objects every CANopen device has: 1000h (device type),
+1001h (error register) and 1018h (identity). Other objects listed there, or one of these three
+listed in another list, make tools misjudge which objects the device must implement.""",
+    "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1017",
+)
+def mandatory_list(ctx: Context) -> Iterator[Finding]:
+    for name, found, position, index in listings(ctx.device):
+        if (name == MANDATORY) != (index in MANDATORY_INDICES):
+            target = home(index)
+            if target is None:
+                continue  # EDS018
+            fix = Fix(f"move 0x{index:04X} to [{target}]", False, _fix_move(name, index, target))
+            message = f"[{name}] {position}=0x{index:04X}: belongs in [{target}]"
+            yield ctx.report("EDS013", message, _entry_at(ctx, found, position), fix)
+
+
+@rule(
+    "EDS017",
+    W,
+    "Object listed outside its index area",
+    """
+[ManufacturerObjects] holds the manufacturer-specific area 2000h-5FFFh and [OptionalObjects] the
+communication and device-profile areas (cia306.md §13); C000h-FFFFh is reserved. Real devices
+put manufacturer objects into the profile area (e.g. 7001h), so this is a warning: check whether
+the object is misplaced or its index is.""",
+    "[OptionalObjects]\nSupportedObjects=1\n1=0x2000",
+)
+def area(ctx: Context) -> Iterator[Finding]:
+    entries = list(listings(ctx.device))
+    for name, found, position, index in entries:
+        target = home(index)
+        if name == MANDATORY or target is None or target == MANDATORY:
+            continue  # EDS013, EDS018
+        if name != target and any(other == target and listed == index for other, _, _, listed in entries):
+            continue  # also in its own list: EDS016
+        if index >= 0xC000:
+            message = f"[{name}] {position}=0x{index:04X}: index in the reserved area C000h-FFFFh"
+            yield ctx.report("EDS017", message, _entry_at(ctx, found, position))
+        elif name != target:
+            fix = Fix(f"move 0x{index:04X} to [{target}]", False, _fix_move(name, index, target))
+            message = f"[{name}] {position}=0x{index:04X}: the index area belongs to [{target}]"
+            yield ctx.report("EDS017", message, _entry_at(ctx, found, position), fix)
+
+
+def _fix_move(source: str, index: int, target: str) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        _fix_unlist(source, index)(device)
+        _fix_list(index)(device)
+
+    return apply
+
+
+@rule(
+    "EDS018",
+    W,
+    "Data type listed",
+    """
+Data types (indices below 1000h, described by DEFTYPE/DEFSTRUCT objects) are not listed in the
+object lists. lely dcfchk rejects them there ("data type objects are not supported").""",
+    "[OptionalObjects]\nSupportedObjects=1\n1=0x0040",
+)
+def data_type_listed(ctx: Context) -> Iterator[Finding]:
+    for name, found, position, index in listings(ctx.device):
+        if index < 0x1000:
+            message = f"[{name}] {position}=0x{index:04X}: data types are not listed"
+            yield ctx.report("EDS018", message, _entry_at(ctx, found, position))
+
+
+@rule(
+    "EDS016",
+    E,
+    "Object listed more than once",
+    """
+Each object appears once across the three object lists. A second entry inflates
+SupportedObjects and leaves tools unsure which list is meant.""",
+    "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n2=0x1017",
+)
+def listed_twice(ctx: Context) -> Iterator[Finding]:
+    seen: dict[int, tuple[str, int]] = {}
+    for name, found, position, index in sorted(listings(ctx.device), key=lambda e: e[1] is not _home_list(ctx, e)):
+        first = seen.setdefault(index, (name, position))
+        if first != (name, position):
+            fix = Fix(f"remove this entry of 0x{index:04X}", True, _fix_duplicate(index))
+            message = f"[{name}] {position}=0x{index:04X}: already listed in [{first[0]}] as {first[1]}"
+            yield ctx.report("EDS016", message, _entry_at(ctx, found, position), fix)
+
+
+def _home_list(ctx: Context, entry: tuple[str, ObjectList, int, int]) -> ObjectList | None:
+    target = home(entry[3])
+    return object_list(ctx.device, target) if target is not None else None
+
+
+def _fix_duplicate(index: int) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        target = home(index)
+        keep: tuple[str, int] | None = None
+        for name, _, position, listed in listings(device):
+            if listed == index and (keep is None or (name == target and keep[0] != target)):
+                keep = (name, position)
+        for name in LISTS:
+            found = object_list(device, name)
+            if found is not None:
+                drop = {p for p, i in found.entries.items() if i == index and (name, p) != keep}
+                if drop:
+                    _renumber(found, drop)
+
+    return apply
+
+
+# ---- counting --------------------------------------------------------------------------------------------------
+
+
+@rule(
+    "EDS014",
+    E,
+    "SupportedObjects does not match the list",
+    """
+SupportedObjects gives the number of entries of an object list (cia306.md §6); tools read
+exactly that many entries, so a wrong count drops objects or fails on a missing entry.""",
+    "[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n2=0x2001",
+)
+def supported_count(ctx: Context) -> Iterator[Finding]:
+    for name in LISTS:
+        found = object_list(ctx.device, name)
+        if found is None or _invalid_count(found) or found.supported_objects == len(found.entries):
+            continue
+        count = len(found.entries)
+        fix = Fix(f"set SupportedObjects={count}", True, _fix_count(name))
+        if found.supported_objects is None:
+            message = f"[{name}]: no SupportedObjects (the list has {count} entries)"
+            yield ctx.report("EDS014", message, ctx.at(found, "SupportedObjects"), fix)
+        else:
+            message = (
+                f"[{name}]: SupportedObjects={found.supported_objects} but {count} entr{'y' if count == 1 else 'ies'}"
+            )
+            yield ctx.report("EDS014", message, ctx.value_at(found, "SupportedObjects"), fix)
+
+
+def _invalid_count(found: ObjectList) -> bool:
+    return any(keys.normalize(key) == "supportedobjects" for key in found.extra)  # the reader reported it
+
+
+def _fix_count(name: str) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        found = object_list(device, name)
+        if found is not None:
+            found.supported_objects = len(found.entries)
+
+    return apply
+
+
+@rule(
+    "EDS015",
+    E,
+    "Object list not numbered 1..n",
+    """
+The entries of an object list are keyed 1, 2, ... n in decimal, without gaps, leading zeros or
+other keys (cia306.md §6). Tools read keys 1..SupportedObjects and miss the others.""",
+    "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n3=0x1200",
+)
+def numbering(ctx: Context) -> Iterator[Finding]:
+    for name in LISTS:
+        found = object_list(ctx.device, name)
+        if found is None:
+            continue
+        positions = sorted(found.entries)
+        gaps = sorted(set(range(1, max(positions, default=0) + 1)) - set(positions))
+        if gaps:
+            fix = Fix(f"renumber [{name}] 1..{len(positions)}", True, _fix_renumber(name))
+            missing = ", ".join(str(g) for g in gaps)
+            yield ctx.report("EDS015", f"[{name}]: no entry {missing}", ctx.at(found), fix)
+        for key in found.extra:
+            if keys.normalize(key) != "supportedobjects" and not _reported(key):
+                message = f"[{name}] {key}: not a list position (1, 2, ... in decimal)"
+                yield ctx.report("EDS015", message, ctx.at(found, key))
+
+
+def _reported(key: str) -> bool:
+    """Positions whose value was not an index: the reader reported them (EDS030)."""
+    return key.isdigit() and key == str(int(key)) and int(key) > 0
+
+
+def _fix_renumber(name: str) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        found = object_list(device, name)
+        if found is not None:
+            _renumber(found)
+
+    return apply

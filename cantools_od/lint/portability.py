@@ -1,3 +1,398 @@
-"""Rule family: portability."""
+"""Rule family: portability — what python-canopen, lely and CANopenNode read differently (cia306.md §16, peers.md).
+
+These rules find nothing wrong by CiA 306; they point at content that a peer tool drops, misreads
+or rejects, so that a file meant for those tools can be adjusted.
+"""
 
 from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterator
+
+from ..eds import keys
+from ..model import Device, Dialect, NodeIdExpr, Object, ObjectKind, Section, Severity, ValueKind, Variable
+from .rules import Context, Finding, rule
+from .structure import EXTENSION_KEYS, RESERVED_DEVICE_INFO
+
+W, INFO = Severity.WARNING, Severity.INFO
+
+_CANOPEN_DUMMIES = range(0x0001, 0x0008)
+_EXTENSION_KEYS = {keys.normalize(key) for key in EXTENSION_KEYS}
+_STRING_FIELDS = (("ParameterName", "name"), ("Denotation", "denotation"))
+
+
+def _vars(device: Device) -> Iterator[tuple[Object, str, Variable]]:
+    """Objects and sub-objects with a section of their own, with a label for messages."""
+    for obj in device.objects.values():
+        if obj.implicit:
+            continue
+        yield obj, f"[{obj.index:04X}]", obj
+        for subindex, sub in obj.subs.items():
+            if not sub.implicit:
+                yield obj, f"[{obj.index:04X}sub{subindex:X}]", sub
+
+
+@rule(
+    "DIA001",
+    W,
+    "[DummyUsage] lacks one of Dummy0001..Dummy0007",
+    """
+python-canopen reads Dummy0001 to Dummy0007 from [DummyUsage] and raises an exception when one
+is missing, although CiA 306 treats a missing key as "not supported" (sparse lely DCFs fail
+this way). Write all seven keys, with 0 where a type is not usable as a dummy.""",
+    "[DummyUsage]\nDummy0005=1\nDummy0006=1\nDummy0007=1",
+)
+def dummy_usage(ctx: Context) -> Iterator[Finding]:
+    usage = ctx.device.dummy_usage
+    if usage is None:
+        return
+    missing = [f"Dummy{index:04X}" for index in _CANOPEN_DUMMIES if index not in usage.enabled]
+    if missing:
+        message = f"[DummyUsage] lacks {', '.join(missing)}; python-canopen fails to load the file"
+        yield ctx.report("DIA001", message, ctx.at(usage))
+
+
+@rule(
+    "DIA002",
+    W,
+    "Quoted string outside a lely file",
+    """
+lely writes VISIBLE_STRING values in double quotes and strips them when reading; CiA 306 and the
+other tools take the quotes as part of the text. In a file that is not otherwise lely's, a quoted
+value is read with its quotes everywhere but in lely.""",
+    '[1008]\nParameterName=Device name\nDataType=0x0009\nAccessType=const\nDefaultValue="Drive"',
+)
+def quoted_strings(ctx: Context) -> Iterator[Finding]:
+    device = ctx.device
+    if device.dialect is Dialect.LELY:
+        return
+    for obj, label, var in _vars(device):
+        dtype = device.entry_type(var, obj)
+        if dtype is None or dtype.kind is not ValueKind.STRING:
+            continue
+        for key, value in (("DefaultValue", var.default), ("ParameterValue", var.parameter_value)):
+            if isinstance(value, str) and len(value) >= 2 and value[0] == value[-1] == '"':
+                message = f"{label} {key}={value}: lely strips the quotes, other tools keep them"
+                yield ctx.report("DIA002", message, ctx.value_at(var, key))
+
+
+@rule(
+    "DIA003",
+    W,
+    "REAL values as lely bit patterns",
+    """
+CiA 306 does not say how REAL32/REAL64 values are written. lely writes IEEE bit patterns
+(`0x40490FDB`), which python-canopen drops without a word and CANopenNode copies into C as
+integers. Decimals, the form the other tools read, are rejected by lely, so a lely file keeps
+its REAL values only for lely. Reported once per file with the lely dialect, at the first REAL
+value.""",
+    "[DeviceInfo]\nVendorName=Lely Industries N.V.\n[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\n"
+    "DefaultValue=0x3FC00000",
+)
+def real_values(ctx: Context) -> Iterator[Finding]:
+    device = ctx.device
+    if device.dialect is not Dialect.LELY:
+        return  # decimals: what python-canopen and CANopenNode read
+    found: list[tuple[Variable, str]] = []
+    for obj, _, var in _vars(device):
+        dtype = device.entry_type(var, obj)
+        if dtype is not None and dtype.kind is ValueKind.REAL:
+            found.extend((var, key) for key, field in _VALUE_KEYS if isinstance(getattr(var, field), float))
+    if found:
+        count = f"{len(found)} REAL value{'s' if len(found) != 1 else ''}"
+        message = f"{count} in lely's bit-pattern form; python-canopen drops them, CANopenNode misreads them"
+        yield ctx.report("DIA003", message, ctx.value_at(found[0][0], found[0][1]))
+
+
+_VALUE_KEYS = (("DefaultValue", "default"), ("ParameterValue", "parameter_value"),
+               ("LowLimit", "low_limit"), ("HighLimit", "high_limit"))  # fmt: skip
+
+
+@rule(
+    "DIA004",
+    W,
+    "CompactSubObj on a RECORD",
+    """
+CiA 306 defines CompactSubObj for ARRAY objects; lely also writes it on RECORDs (all its PDO
+mapping objects). python-canopen turns such a RECORD into an empty record and ignores its
+[xxxxValue] section, so PDO mappings are lost; CANopenEditor expands it.""",
+    "[1A00]\nParameterName=TPDO1 mapping\nObjectType=0x9\nDataType=0x0007\nAccessType=rw\nCompactSubObj=8",
+)
+def compact_record(ctx: Context) -> Iterator[Finding]:
+    for obj in ctx.device.objects.values():
+        if not obj.implicit and obj.kind is ObjectKind.RECORD and obj.compact_sub_obj:
+            message = f"[{obj.index:04X}]: CompactSubObj on a RECORD; python-canopen reads an empty record"
+            yield ctx.report("DIA004", message, ctx.at(obj, "CompactSubObj"))
+
+
+@rule(
+    "DIA005",
+    W,
+    "DEFTYPE or DEFSTRUCT object",
+    """
+Data-type definitions (ObjectType 0x5/0x6) are valid CiA 306, but lely dcfchk rejects them ("not
+supported") and python-canopen skips them, failing with a KeyError on their sub-objects. Entries
+typed by them become unreadable there.""",
+    "[0040]\nParameterName=My record type\nObjectType=0x6\nSubNumber=3",
+)
+def type_definitions(ctx: Context) -> Iterator[Finding]:
+    for obj in ctx.device.objects.values():
+        if not obj.implicit and obj.kind in (ObjectKind.DEFTYPE, ObjectKind.DEFSTRUCT):
+            message = f"[{obj.index:04X}]: {obj.kind.name}; lely rejects it and python-canopen skips it"
+            yield ctx.report("DIA005", message, ctx.at(obj))
+
+
+@rule(
+    "DIA006",
+    INFO,
+    "CANopenNode extension comments",
+    """
+CANopenEditor and eds-utils keep CANopenNode settings as comment lines (`;StorageLocation=RAM`,
+`;TPDODetectCos=1`). Other tools ignore them, so the storage groups they define exist only for
+CANopenNode's code generators. Reported once per file.""",
+    "[2000]\nParameterName=Counter\n;StorageLocation=PERSIST_COMM\nDataType=0x0007",
+)
+def extension_comments(ctx: Context) -> Iterator[Finding]:
+    found: list[Section] = []
+    for _, _, var in _vars(ctx.device):
+        lines = (line for block in var.comments.values() for line in block)
+        if any(line.startswith((";StorageLocation", ";TPDODetectCos")) for line in lines):
+            found.append(var)
+    if found:
+        message = f"{len(found)} section{'s' if len(found) != 1 else ''} with ;StorageLocation/;TPDODetectCos comments"
+        yield ctx.report("DIA006", message + "; only CANopenNode tools read them", ctx.at(found[0]))
+
+
+@rule(
+    "DIA007",
+    W,
+    "Text outside ASCII",
+    """
+CiA 306 files are ASCII. Names, denotations and [FileInfo]/[DeviceInfo] texts with other
+characters (`µ`, `°C`, `‰`) depend on the file's encoding, which tools guess differently
+(python-canopen uses the locale; non-UTF-8 fails). Generated code and documentation then carry
+mangled names. VISIBLE_STRING values are checked by EDS038.""",
+    "[6075]\nParameterName=Motor rated current [mA] µ",
+)
+def non_ascii(ctx: Context) -> Iterator[Finding]:
+    device = ctx.device
+    for _, label, var in _vars(device):
+        for key, field in _STRING_FIELDS:  # VISIBLE_STRING values: EDS038
+            value = getattr(var, field)
+            if isinstance(value, str) and not value.isascii():
+                yield ctx.report("DIA007", f"{label} {key}: {value!r} is not ASCII", ctx.value_at(var, key))
+    tables: tuple[tuple[str, Section, dict[str, keys.KeySpec]], ...] = (
+        ("FileInfo", device.file_info, keys.FILE_INFO_KEYS),
+        ("DeviceInfo", device.device_info, keys.DEVICE_INFO_KEYS),
+    )
+    for name, section, table in tables:
+        for spelling, field, kind in table.values():
+            value = getattr(section, field, None) if kind is keys.Kind.STR else None
+            if isinstance(value, str) and not value.isascii():
+                message = f"[{name}] {spelling}: {value!r} is not ASCII"
+                yield ctx.report("DIA007", message, ctx.value_at(section, spelling))
+
+
+@rule(
+    "DIA008",
+    W,
+    "Custom data type on an entry",
+    """
+An entry typed by a DEFTYPE/DEFSTRUCT data type (DataType above 001Bh and defined in the file)
+is valid CiA 306, but python-canopen falls back to DOMAIN for it, canmatrix fails and lely does
+not support it. Undefined custom types are reported by EDS080.""",
+    "[0040]\nObjectType=0x5\nDataType=0x0007\n...\n[2000]\nParameterName=Setting\nDataType=0x0040",
+)
+def custom_types(ctx: Context) -> Iterator[Finding]:
+    objects = ctx.device.objects
+    for _, label, var in _vars(ctx.device):
+        dtype = var.data_type
+        definition = objects.get(dtype) if dtype is not None and 0x001B < dtype < 0x1000 else None
+        if definition is not None and definition.kind in (ObjectKind.DEFTYPE, ObjectKind.DEFSTRUCT):
+            message = f"{label} DataType=0x{dtype:04X} (a custom type); python-canopen reads it as DOMAIN"
+            yield ctx.report("DIA008", message, ctx.value_at(var, "DataType"))
+
+
+@rule(
+    "DIA009",
+    INFO,
+    "RECORD sub-objects with the same name",
+    """
+CANopenNode's generator names the members of a RECORD's C structure after its sub-objects'
+ParameterNames; two sub-objects with the same name produce colliding members, and other code
+generators (and CANopenEditor, #55) drop one of them.""",
+    "[2000sub1]\nParameterName=Value\n...\n[2000sub2]\nParameterName=Value",
+)
+def duplicate_names(ctx: Context) -> Iterator[Finding]:
+    for obj in ctx.device.objects.values():
+        if obj.implicit or obj.kind is not ObjectKind.RECORD:
+            continue
+        counts = Counter(sub.name for sub in obj.subs.values() if sub.name)
+        seen: set[str] = set()
+        for subindex, sub in obj.subs.items():
+            if counts[sub.name] > 1 and sub.name in seen:
+                message = f"[{obj.index:04X}sub{subindex:X}]: name {sub.name!r} repeats an earlier sub-object's"
+                where = ctx.at(obj) if sub.implicit else ctx.at(sub, "ParameterName")
+                yield ctx.report("DIA009", message, where)
+            seen.add(sub.name)
+
+
+@rule(
+    "DIA010",
+    W,
+    "python-canopen extension key",
+    """
+python-canopen reads the keys Factor, Unit, Description and StorageLocation in object sections;
+they are not CiA 306 keys, and lely dcfchk rejects them as invalid entries.""",
+    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nUnit=rpm",
+)
+def extension_keys(ctx: Context) -> Iterator[Finding]:
+    for _, label, var in _vars(ctx.device):
+        for key in var.extra:
+            if keys.normalize(key) in _EXTENSION_KEYS:
+                message = f"{label} {key}: read by python-canopen only; lely rejects it"
+                yield ctx.report("DIA010", message, ctx.at(var, key))
+
+
+@rule(
+    "DIA011",
+    INFO,
+    "Reserved [DeviceInfo] compatibility key",
+    """
+CiA 306 reserves ProductVersion, ProductRevision, LMT_ManufacturerName, LMT_ProductName,
+ExtendedBootUpMaster and ExtendedBootUpSlave in [DeviceInfo] for compatibility; they are
+valid, but lely dcfchk wrongly rejects them as unknown keys.""",
+    "[DeviceInfo]\nProductVersion=1",
+)
+def reserved_keys(ctx: Context) -> Iterator[Finding]:
+    info = ctx.device.device_info
+    reserved = {keys.normalize(k) for k in RESERVED_DEVICE_INFO}
+    for key in info.extra:
+        if keys.normalize(key) in reserved:
+            yield ctx.report("DIA011", f"[DeviceInfo] {key}: lely dcfchk rejects this reserved key", ctx.at(info, key))
+
+
+@rule(
+    "DIA012",
+    INFO,
+    "Module-concept sections",
+    """
+The module concept ([SupportedModules], [M<x>...], [ConnectedModules]) is CiA 306, but only
+CANopenEditor reads it, partially: lely dcfchk fails on the sections and python-canopen ignores
+them, so the objects of the modules are missing there. Reported once per file.""",
+    "[SupportedModules]\nNrOfEntries=1\n[M1ModuleInfo]\nProductName=Input module",
+)
+def module_sections(ctx: Context) -> Iterator[Finding]:
+    sections = ctx.device.module_sections
+    if sections:
+        message = f"{len(sections)} module-concept sections; only CANopenEditor reads them"
+        yield ctx.report("DIA012", message, ctx.at(sections[0]))
+
+
+@rule(
+    "DIA013",
+    W,
+    "TIME value",
+    """
+CiA 306 does not specify how TIME_OF_DAY and TIME_DIFFERENCE values are written. lely writes
+`days ms`; python-canopen concatenates the two numbers into one integer (`365 43200000` becomes
+36543200000) and CANopenNode expects a byte array.""",
+    "[2000]\nParameterName=Start\nDataType=0x000C\nAccessType=rw\nDefaultValue=365 43200000",
+)
+def time_values(ctx: Context) -> Iterator[Finding]:
+    device = ctx.device
+    for obj, label, var in _vars(device):
+        dtype = device.entry_type(var, obj)
+        if dtype is None or dtype.kind is not ValueKind.TIME:
+            continue
+        for key, field in _VALUE_KEYS:
+            if getattr(var, field) is not None:
+                message = f"{label} {key} of {dtype.name}: no portable text form"
+                yield ctx.report("DIA013", message, ctx.value_at(var, key))
+
+
+@rule(
+    "DIA014",
+    W,
+    "$NODEID in a limit",
+    """
+CiA 306 allows `$NODEID` in LowLimit and HighLimit, but only lely reads it there; python-canopen
+and CANopenNode drop or reject such limits.""",
+    "[1200sub1]\nParameterName=COB-ID client->server\nDataType=0x0007\nAccessType=ro\n"
+    "DefaultValue=$NODEID+0x600\nLowLimit=$NODEID+0x600",
+)
+def nodeid_limits(ctx: Context) -> Iterator[Finding]:
+    for _, label, var in _vars(ctx.device):
+        for key, value in (("LowLimit", var.low_limit), ("HighLimit", var.high_limit)):
+            if isinstance(value, NodeIdExpr):
+                message = f"{label} {key}={value.canonical()}: only lely reads $NODEID in limits"
+                yield ctx.report("DIA014", message, ctx.value_at(var, key))
+
+
+@rule(
+    "DIA015",
+    W,
+    "Empty PDOMapping",
+    """
+`PDOMapping=` without a value means 0 in CiA 306 (an empty entry equals a missing one), but
+python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key out.""",
+    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nPDOMapping=",
+)
+def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
+    for _, label, var in _vars(ctx.device):
+        written = var.origin is not None and "PDOMapping" in var.origin.keys
+        invalid = any(keys.normalize(k) == "pdomapping" for k in var.extra)  # the reader reported it
+        if written and var.pdo_mapping is None and not invalid:
+            message = f"{label} PDOMapping is empty; python-canopen fails on it"
+            yield ctx.report("DIA015", message, ctx.at(var, "PDOMapping"))
+
+
+@rule(
+    "DIA016",
+    INFO,
+    "ObjFlags set",
+    """
+ObjFlags bit 0 (refuse write on download) and bit 1 (refuse read on scan) are CiA 306, but lely
+ORs the value into its own flag word with bits 0 and 1 swapped, python-canopen keeps it as an
+unknown option and the lely code generator drops it. Reported once per file.""",
+    "[2000]\nParameterName=Serial number\nDataType=0x0007\nAccessType=ro\nObjFlags=0x2",
+)
+def obj_flags(ctx: Context) -> Iterator[Finding]:
+    found = [(label, var) for _, label, var in _vars(ctx.device) if var.obj_flags and not var.obj_flags & ~0x3]
+    if found:
+        label, var = found[0]
+        message = f"{_count(found, 'entry', 'entries')} with ObjFlags (first {label}); lely swaps bits 0 and 1"
+        yield ctx.report("DIA016", message + ", python-canopen ignores them", ctx.value_at(var, "ObjFlags"))
+
+
+def _count(items: list[tuple[str, Variable]] | list[tuple[str, Variable, str]], one: str, many: str) -> str:
+    return f"{len(items)} {one if len(items) == 1 else many}"
+
+
+@rule(
+    "DIA017",
+    W,
+    "';' or '#' in a text value",
+    """
+CiA 306 has no inline comments: `Motor #1; left` is a legal name. lely's C parser ends the value
+at the first `#` or `;`, lely's Python tools and python-canopen at a `;` (lely: also `#`) after
+a blank, so those tools read a truncated name or string. Reported once per file.""",
+    "[2000]\nParameterName=Motor #1 speed\nDataType=0x0006\nAccessType=rw",
+)
+def comment_characters(ctx: Context) -> Iterator[Finding]:
+    device = ctx.device
+    found: list[tuple[str, Variable, str]] = []
+    for obj, label, var in _vars(device):
+        dtype = device.entry_type(var, obj)
+        fields = [*_STRING_FIELDS]
+        if dtype is not None and dtype.kind is ValueKind.STRING:
+            fields += [("DefaultValue", "default"), ("ParameterValue", "parameter_value")]
+        found.extend(
+            (f"{label} {key}", var, key)
+            for key, field in fields
+            if isinstance(getattr(var, field), str) and ("#" in getattr(var, field) or ";" in getattr(var, field))
+        )
+    if found:
+        first = ", ".join(item[0] for item in found[:3]) + (", ..." if len(found) > 3 else "")
+        message = f"{_count(found, 'text value', 'text values')} with '#' or ';' ({first}); lely cuts them there"
+        yield ctx.report("DIA017", message, ctx.value_at(found[0][1], found[0][2]))

@@ -1,3 +1,318 @@
-"""Rule family: values."""
+"""Rule family: values — DefaultValue, ParameterValue and limits against their data type (cia306.md §7.6, §8.3)."""
 
 from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from ..model import DataType, Location, NodeIdExpr, Object, ObjectKind, Severity, TimeValue, Value, ValueKind, Variable
+from .rules import Context, Finding, rule
+
+E, W = Severity.ERROR, Severity.WARNING
+
+_KEYS = (("DefaultValue", "default"), ("ParameterValue", "parameter_value"),
+         ("LowLimit", "low_limit"), ("HighLimit", "high_limit"))  # fmt: skip
+_COMPOUND = (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
+_NODEID_TEXT = re.compile(r"\s*\$nodeid", re.IGNORECASE)
+_TIME_OF_DAY_MS = 86_400_000
+_ALL_NODE_IDS = tuple(range(1, 128))
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One entry with values: `limits` is where its limits come from (the object, for CompactSubObj subs)."""
+
+    owner: Object
+    label: str
+    var: Variable
+    limits: Variable
+    dtype: DataType | None
+    implicit: bool  # a CompactSubObj sub-object: only its [xxxxValue] value is its own
+
+    def values(self) -> Iterator[tuple[str, Value]]:
+        for key, field in _KEYS:
+            value = getattr(self.var, field)
+            if value is not None and (not self.implicit or key == "ParameterValue"):
+                yield key, value
+
+
+def entries(ctx: Context) -> Iterator[Entry]:
+    """Every entry whose values are its own, once: a CompactSubObj object stands for the subs it copies into."""
+    device = ctx.device
+    for obj in device.objects.values():
+        if obj.implicit:
+            continue  # CompactPDO: made up from the standard, not from the file
+        compound = obj.kind in _COMPOUND
+        if not compound or obj.compact_sub_obj:
+            yield Entry(obj, f"[{obj.index:04X}]", obj, obj, device.entry_type(obj, obj), False)
+        if not compound:
+            continue
+        for subindex, sub in obj.subs.items():
+            label = f"[{obj.index:04X}Value] {subindex}" if sub.implicit else f"[{obj.index:04X}sub{subindex:X}]"
+            limits = obj if sub.implicit else sub
+            if not (sub.implicit and subindex == 0):
+                yield Entry(obj, label, sub, limits, device.entry_type(sub, obj), sub.implicit)
+
+
+def _at(ctx: Context, entry: Entry, key: str) -> Location:
+    return ctx.at(entry.owner) if entry.implicit else ctx.value_at(entry.var, key)
+
+
+def node_ids(ctx: Context) -> tuple[int, ...]:
+    """The node-IDs `$NODEID` may stand for: the given or commissioned one, else 1..127."""
+    for candidate in (ctx.options.node_id, ctx.device.node_id):
+        if candidate is not None and 1 <= candidate <= 127:
+            return (candidate,)
+    return _ALL_NODE_IDS
+
+
+def number(value: Value, node_id: int) -> int | float | None:
+    """A value as a number to compare, `$NODEID` resolved; None when it is no number."""
+    if isinstance(value, NodeIdExpr):
+        return value.resolve(node_id)
+    if isinstance(value, (int, float)):  # bool included: BOOLEAN is 0 or 1
+        return value
+    return None
+
+
+def always(nids: tuple[int, ...], problem: Callable[[int], str | None]) -> str | None:
+    """The problem for the first node-ID when there is one for every node-ID, else None.
+
+    A `$NODEID` value that is wrong only for some node-IDs describes a device restricted to the
+    others (a COB-ID limited to 0x181..0x18F serves node-IDs 1..15); that is not reported.
+    """
+    first = problem(nids[0])
+    if first is None or any(problem(nid) is None for nid in nids[1:]):
+        return None
+    return first
+
+
+def _formula(value: Value, node_id: int, nids: tuple[int, ...]) -> str:
+    if not isinstance(value, NodeIdExpr):
+        return ""
+    return f" for node-ID {node_id}" if len(nids) == 1 else " for every node-ID 1..127"
+
+
+@rule(
+    "EDS034",
+    E,
+    "Value outside its data type's range",
+    """
+A DefaultValue, ParameterValue or limit must fit its data type: UNSIGNED8 holds 0..255,
+INTEGER16 -32768..32767, and so on; a TIME value's days fit 16 bits and its milliseconds 28
+bits (a day for TIME_OF_DAY). `$NODEID` values are checked for every node-ID 1..127 (or the
+node-ID given). Tools truncate such values or reject the file.""",
+    "[2000]\nParameterName=Count\nDataType=0x0005\nAccessType=rw\nDefaultValue=300",
+)
+def type_range(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        dtype = entry.dtype
+        if dtype is None:
+            continue
+        for key, value in entry.values():
+            problem = _range_problem(dtype, value, relevant(ctx, value))
+            if problem:
+                yield ctx.report("EDS034", f"{entry.label} {key}: {problem}", _at(ctx, entry, key))
+
+
+def _range_problem(dtype: DataType, value: Value, nids: tuple[int, ...]) -> str | None:
+    if isinstance(value, TimeValue) and dtype.kind is ValueKind.TIME:
+        ms_limit = _TIME_OF_DAY_MS if dtype.index == 0x000C else 1 << 28
+        if not (0 <= value.days <= 0xFFFF and 0 <= value.ms < ms_limit):
+            return f"{value.days} days {value.ms} ms is outside {dtype.name}"
+        return None
+    bounds = dtype.int_range() if dtype.is_integer else None
+    if bounds is None or isinstance(value, bool):
+        return None
+    low, high = bounds
+
+    def problem(nid: int) -> str | None:
+        resolved = number(value, nid)
+        if not isinstance(resolved, int) or low <= resolved <= high:
+            return None
+        shown = f"{resolved} (0x{resolved:X})" if resolved >= 0 else str(resolved)
+        return f"{shown}{_formula(value, nid, nids)} is outside {dtype.name} ({low}..{high})"
+
+    return always(nids, problem)
+
+
+@rule(
+    "EDS036",
+    E,
+    "Limits on a non-numeric data type",
+    """
+LowLimit and HighLimit bound numeric values (integers, BOOLEAN, REAL); strings, OCTET_STRING,
+DOMAIN and the TIME types have no order a limit could use (cia306.md §7.6).""",
+    "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nLowLimit=0",
+)
+def non_numeric_limits(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        if entry.implicit or entry.dtype is None or entry.dtype.is_numeric or entry.owner.kind is ObjectKind.DOMAIN:
+            continue  # limits on a DOMAIN object: EDS024
+        for key, field in (("LowLimit", "low_limit"), ("HighLimit", "high_limit")):
+            if getattr(entry.var, field) is not None:
+                message = f"{entry.label} {key} on {entry.dtype.name}, which has no numeric order"
+                yield ctx.report("EDS036", message, ctx.at(entry.var, key))
+
+
+def _limit(entry: Entry, field: str, nid: int) -> int | float | None:
+    value = getattr(entry.limits, field)
+    return number(value, nid) if value is not None else None
+
+
+def relevant(ctx: Context, *values: Value | None) -> tuple[int, ...]:
+    """The node-IDs worth trying: one stands for all when no value is a `$NODEID` formula."""
+    return node_ids(ctx) if any(isinstance(v, NodeIdExpr) for v in values) else (1,)
+
+
+def _inverted(ctx: Context, entry: Entry) -> bool:
+    """LowLimit > HighLimit (for every node-ID, with `$NODEID` limits)."""
+
+    def problem(nid: int) -> str | None:
+        low, high = _limit(entry, "low_limit", nid), _limit(entry, "high_limit", nid)
+        return "inverted" if low is not None and high is not None and low > high else None
+
+    return always(relevant(ctx, entry.limits.low_limit, entry.limits.high_limit), problem) is not None
+
+
+@rule(
+    "EDS031",
+    E,
+    "LowLimit above HighLimit",
+    """
+No value can satisfy a LowLimit greater than its HighLimit; every write to the entry fails.
+Signed limits are compared as the numbers they denote (two's-complement hex included).""",
+    "[2000]\nParameterName=Offset\nDataType=0x0003\nAccessType=rw\nLowLimit=100\nHighLimit=-100",
+)
+def limits_order(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        if entry.implicit or entry.dtype is None or not entry.dtype.is_numeric:
+            continue
+        if _inverted(ctx, entry):
+            low, high = entry.var.low_limit, entry.var.high_limit
+            low_number = number(low, 1) if low is not None else None
+            hint = ""
+            if entry.dtype.kind is ValueKind.SIGNED and isinstance(high, int) and high < 0 <= (low_number or 0):
+                hint = " (a hex HighLimit such as 0xFF is two's complement for a signed type)"
+            message = f"{entry.label} LowLimit {_shown(low)} > HighLimit {_shown(high)}{hint}"
+            yield ctx.report("EDS031", message, ctx.value_at(entry.var, "LowLimit"))
+
+
+def _shown(value: Value | None) -> str:
+    if isinstance(value, NodeIdExpr):
+        return value.canonical()
+    return repr(value) if isinstance(value, str) else str(value)
+
+
+def _outside(ctx: Context, entry: Entry, key: str, value: Value) -> str | None:
+    if entry.dtype is None or not entry.dtype.is_numeric or _inverted(ctx, entry):
+        return None
+    nids = relevant(ctx, value, entry.limits.low_limit, entry.limits.high_limit)
+
+    def problem(nid: int) -> str | None:
+        resolved, low, high = number(value, nid), _limit(entry, "low_limit", nid), _limit(entry, "high_limit", nid)
+        if resolved is not None and low is not None and resolved < low:
+            return f"{key} {resolved}{_formula(value, nid, nids)} is below LowLimit {low}"
+        if resolved is not None and high is not None and resolved > high:
+            return f"{key} {resolved}{_formula(value, nid, nids)} is above HighLimit {high}"
+        return None
+
+    return always(nids, problem)
+
+
+@rule(
+    "EDS035",
+    E,
+    "DefaultValue outside the limits",
+    """
+The DefaultValue lies within LowLimit..HighLimit (cia306.md §7.6); a device cannot start with a
+value it would refuse to be written. `$NODEID` defaults are checked for node-IDs 1..127.""",
+    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nDefaultValue=5000\nHighLimit=3000",
+)
+def default_in_limits(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        if entry.implicit or entry.var.default is None:
+            continue
+        problem = _outside(ctx, entry, "DefaultValue", entry.var.default)
+        if problem:
+            yield ctx.report("EDS035", f"{entry.label} {problem}", ctx.value_at(entry.var, "DefaultValue"))
+
+
+@rule(
+    "EDS061",
+    E,
+    "ParameterValue outside the limits",
+    """
+A DCF's ParameterValue (and each `[xxxxValue]` entry of a CompactSubObj object, checked against
+the object's limits) is configured into the device, which refuses values outside
+LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boot-up.""",
+    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nHighLimit=3000\nParameterValue=5000",
+)
+def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        value = entry.var.parameter_value
+        if value is None:
+            continue
+        problem = _outside(ctx, entry, "ParameterValue", value)
+        if problem:
+            yield ctx.report("EDS061", f"{entry.label} {problem}", _at(ctx, entry, "ParameterValue"))
+
+
+@rule(
+    "EDS037",
+    W,
+    "$NODEID in a value that is not an integer",
+    """
+`$NODEID` formulas are defined for integer entries only (cia306.md §1.1). In a VISIBLE_STRING
+the text stays as it is, which is rarely what was meant: usually the DataType is wrong.""",
+    "[2000]\nParameterName=COB-ID\nDataType=0x0009\nAccessType=ro\nDefaultValue=$NODEID+0x180",
+)
+def nodeid_text(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        for key, value in entry.values():
+            if isinstance(value, str) and _NODEID_TEXT.match(value) and entry.dtype is not None:
+                message = f"{entry.label} {key}={value}: $NODEID on {entry.dtype.name} is kept as text"
+                yield ctx.report("EDS037", message, _at(ctx, entry, key))
+
+
+@rule(
+    "EDS038",
+    W,
+    "VISIBLE_STRING with characters outside printable ASCII",
+    """
+VISIBLE_STRING holds the visible ISO 646 characters 20h-7Eh. Other characters (umlauts, µ, °,
+control characters) have no defined encoding on the bus; devices and tools show them
+differently. Use UNICODE_STRING or OCTET_STRING for other text.""",
+    "[1008]\nParameterName=Device name\nDataType=0x0009\nAccessType=const\nDefaultValue=Motor 5°",
+)
+def visible_string(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        if entry.dtype is None or entry.dtype.kind is not ValueKind.STRING:
+            continue
+        for key, value in entry.values():
+            odd = sorted({c for c in value if not " " <= c <= "~"}) if isinstance(value, str) else []
+            if odd:
+                shown = ", ".join(f"U+{ord(c):04X}" for c in odd[:5])
+                message = f"{entry.label} {key}: characters outside printable ASCII ({shown})"
+                yield ctx.report("EDS038", message, _at(ctx, entry, key))
+
+
+@rule(
+    "EDS039",
+    W,
+    "REAL value not finite",
+    """
+A REAL DefaultValue, ParameterValue or limit that is NaN or infinite cannot be compared or range
+checked; as a limit it disables the check, as a default it is rarely intended. Peer tools read
+`nan`/`inf` text differently or not at all.""",
+    "[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\nDefaultValue=nan",
+)
+def real_finite(ctx: Context) -> Iterator[Finding]:
+    for entry in entries(ctx):
+        if entry.dtype is None or entry.dtype.kind is not ValueKind.REAL:
+            continue
+        for key, value in entry.values():
+            if isinstance(value, float) and not math.isfinite(value):
+                yield ctx.report("EDS039", f"{entry.label} {key}={value}: not a finite number", _at(ctx, entry, key))

@@ -2,17 +2,11 @@
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import pytest
+from pdokit import VALUE_COLUMN, at, comm, eds, findings, mapping, record, section, var, where
 
 from cantools_od.lint import LintOptions
 from cantools_od.model import Severity
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/lint has no __init__.py: reach tests/
-
-from pdokit import VALUE_COLUMN, at, comm, eds, findings, mapping, record, section, var, where
 
 STATUS = var(0x6041, "Statusword", 0x0006, "ro")
 CONTROL = var(0x6040, "Controlword", 0x0006, "rw")

@@ -4,16 +4,13 @@ from __future__ import annotations
 
 import os
 import subprocess
-import sys
 from pathlib import Path
+
+from pdokit import VALUE_COLUMN, at, comm, dcf, load, mapping, section, var, where
 
 from cantools_od.lint import Finding, LintOptions
 from cantools_od.lint.network import lint_network
 from cantools_od.model import Severity
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/lint has no __init__.py: reach tests/
-
-from pdokit import VALUE_COLUMN, at, comm, dcf, load, mapping, section, var, where
 
 from support import ROOT, cli_command
 

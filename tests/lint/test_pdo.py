@@ -2,19 +2,15 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import pytest
+from pdokit import VALUE_COLUMN, at, comm, eds, findings, load, mapping, record, section, var, where
 
 from cantools_od import dumps
 from cantools_od import load as load_file
 from cantools_od.lint import LintOptions, lint
 from cantools_od.model import Severity
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/lint has no __init__.py: reach tests/
-
-from pdokit import VALUE_COLUMN, at, comm, eds, findings, load, mapping, record, section, var, where
 
 from support import EXAMPLES, corpus_params
 

@@ -107,3 +107,16 @@ def test_rules_command_lists_and_explains() -> None:
     one = subprocess.run([*cli_command(), "rules", "eds030"], capture_output=True, text=True)
     assert one.returncode == 0 and "Example:" in one.stdout
     assert subprocess.run([*cli_command(), "rules", "NOPE1"], capture_output=True, text=True).returncode == 2
+
+
+def test_nodeid_spelling_fix_touches_only_its_line(tmp_path: Path) -> None:
+    source = "[1014]\r\nParameterName=COB-ID EMCY\r\nDataType=0x0007\r\nAccessType=ro\r\nDefaultValue=0x80+$nodeid\r\n"
+    target = tmp_path / "emcy.eds"
+    target.write_bytes(source.encode())
+    before = run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--format", "json")
+    findings = json.loads(before.stdout)  # two: $NODEID placed last, and in lower case
+    assert len(findings) == 2
+    assert all(f["fix"] == {"message": "write $NODEID+0x80", "safe": True} for f in findings)
+    assert run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--fix").returncode == 0
+    assert target.read_bytes() == source.replace("0x80+$nodeid", "$NODEID+0x80").encode()
+    assert json.loads(run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--format", "json").stdout) == []

@@ -39,14 +39,17 @@ def hex_int(value: int, width: int) -> str:
     return f"0x{value:0{width}X}" if value >= 0 else f"-0x{-value:0{width}X}"
 
 
-def format_value(value: Value | None, dtype: DataType | None, dialect: Dialect) -> str:
-    """A typed value (DefaultValue, limits, ParameterValue) in canonical form."""
+def format_value(value: Value | None, dtype: DataType | None, dialect: Dialect, as_written: bool = False) -> str:
+    """A typed value (DefaultValue, limits, ParameterValue) in canonical form.
+
+    `as_written` keeps a `$NODEID` formula spelled as it was read.
+    """
     if value is None:
         return ""
     if isinstance(value, RawValue):
         return value.text
     if isinstance(value, NodeIdExpr):
-        return value.canonical()
+        return value.text if as_written and value.text else value.canonical()
     if isinstance(value, bool):
         return "1" if value else "0"
     if isinstance(value, int):

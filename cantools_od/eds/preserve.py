@@ -59,8 +59,8 @@ def preserve(device: Device) -> bytes:
     original = device._original
     if original is None:
         raise ValueError("the device was not read from EDS/DCF bytes")
-    before = {s.name: s for s in sections(read_bytes(original, device.source, dcf=device.is_dcf))}
-    after = {s.name: s for s in sections(device)}
+    before = {s.name: s for s in sections(read_bytes(original, device.source, dcf=device.is_dcf), as_written=True)}
+    after = {s.name: s for s in sections(device, as_written=True)}
     if _entries(before) == _entries(after):
         return original
     text, encoding, _ = decode_as(original)

@@ -14,6 +14,12 @@ from .format import format_key, format_value
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
 
 
+@dataclass(frozen=True)
+class _Style:
+    dcf: bool
+    as_written: bool
+
+
 @dataclass
 class OutSection:
     name: str
@@ -21,8 +27,10 @@ class OutSection:
     comments: dict[str, list[str]] = field(default_factory=dict)
 
 
-def sections(device: Device, dcf: bool = False) -> list[OutSection]:
-    """The canonical sections of a device, in order. `dcf` adds commissioning and resolved values."""
+def sections(device: Device, dcf: bool = False, as_written: bool = False) -> list[OutSection]:
+    """The canonical sections of a device, in order. `dcf` adds commissioning and resolved values;
+    `as_written` keeps `$NODEID` formulas spelled as read (the preserving writer compares spellings)."""
+    style = _Style(dcf, as_written)
     # [FileInfo] and [DeviceInfo] are mandatory, but are not made up when the model has nothing for them.
     out = [
         section
@@ -61,7 +69,7 @@ def sections(device: Device, dcf: bool = False) -> list[OutSection]:
             out.append(_with_extra(name, entries, attr))
     for obj in device.objects.values():
         if not obj.implicit:
-            out.extend(_object_sections(device, obj, dcf))
+            out.extend(_object_sections(device, obj, style))
     for raw in [*device.module_sections, *device.other_sections]:
         out.append(_with_extra(raw.name, dict(raw.entries), raw))
     return out
@@ -86,7 +94,7 @@ def _keyed(name: str, model: FileInfo | DeviceInfo | Commissioning, table: dict[
     return _with_extra(name, entries, model)
 
 
-def _variable_entries(device: Device, var: Variable, owner: Object, dcf: bool) -> dict[str, str]:
+def _variable_entries(device: Device, var: Variable, owner: Object, style: _Style) -> dict[str, str]:
     entries: dict[str, str] = {}
     data = var.__dict__
     dtype = None
@@ -95,7 +103,7 @@ def _variable_entries(device: Device, var: Variable, owner: Object, dcf: bool) -
         if (
             attr == "parameter_value"
             and value is None
-            and dcf
+            and style.dcf
             and isinstance(var.default, NodeIdExpr)
             and device.node_id is not None
         ):
@@ -104,22 +112,22 @@ def _variable_entries(device: Device, var: Variable, owner: Object, dcf: bool) -
             continue
         if kind.value == "value":
             dtype = dtype or device.entry_type(var, owner)
-            entries[spelling] = format_value(value, dtype, device.dialect)
+            entries[spelling] = format_value(value, dtype, device.dialect, style.as_written)
         else:
             entries[spelling] = format_key(spelling, value)
     return entries
 
 
-def _object_sections(device: Device, obj: Object, dcf: bool) -> list[OutSection]:
+def _object_sections(device: Device, obj: Object, style: _Style) -> list[OutSection]:
     name = f"{obj.index:04X}"
-    out = [_with_extra(name, _variable_entries(device, obj, obj, dcf), obj)]
+    out = [_with_extra(name, _variable_entries(device, obj, obj, style), obj)]
     compact: dict[str, dict[str, str]] = {"Name": {}, "Value": {}, "Denotation": {}}
     dtype = device.entry_type(obj, obj)
     for subindex, sub in obj.subs.items():
         if sub.implicit and obj.compact_sub_obj:
-            _compact_entries(device, obj, subindex, sub, compact, dtype)
+            _compact_entries(device, obj, subindex, sub, compact, dtype, style)
             continue
-        out.append(_with_extra(f"{name}sub{subindex:X}", _variable_entries(device, sub, obj, dcf), sub))
+        out.append(_with_extra(f"{name}sub{subindex:X}", _variable_entries(device, sub, obj, style), sub))
     for suffix, entries in compact.items():
         if entries:
             out.append(OutSection(f"{name}{suffix}", {"NrOfEntries": str(len(entries)), **entries}))
@@ -130,7 +138,13 @@ def _object_sections(device: Device, obj: Object, dcf: bool) -> list[OutSection]
 
 
 def _compact_entries(
-    device: Device, obj: Object, subindex: int, sub: SubObject, compact: dict[str, dict[str, str]], dtype: Any
+    device: Device,
+    obj: Object,
+    subindex: int,
+    sub: SubObject,
+    compact: dict[str, dict[str, str]],
+    dtype: Any,
+    style: _Style,
 ) -> None:
     if subindex == 0:
         return
@@ -138,7 +152,7 @@ def _compact_entries(
     if sub.name != implicit_sub_name(obj, subindex):
         compact["Name"][key] = sub.name
     if sub.parameter_value is not None:
-        compact["Value"][key] = format_value(sub.parameter_value, dtype, device.dialect)
+        compact["Value"][key] = format_value(sub.parameter_value, dtype, device.dialect, style.as_written)
     if sub.denotation is not None:
         compact["Denotation"][key] = sub.denotation
 

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
-from ..model import Severity
-from .rules import declare
+from collections.abc import Callable
+
+from ..model import Device, Diagnostic, NodeIdExpr, Severity, Variable
+from .rules import Context, Fix, declare
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -91,3 +93,33 @@ Such a section needs its object, and the first three need CompactSubObj on it; k
 decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) counts them.""",
     "[2000Name]\nNrOfEntries=2\n1=First",
 )
+
+
+_VALUE_KEYS = {"DefaultValue": "default", "ParameterValue": "parameter_value", "LowLimit": "low_limit",
+               "HighLimit": "high_limit"}  # fmt: skip
+
+
+def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:
+    """A fix for a finding the reader made: respelling a `$NODEID` formula (EDS033)."""
+    if diagnostic.code != "EDS033":
+        return None
+    for _, _, var in ctx.variables():
+        if var.origin is None:
+            continue
+        for key, field in _VALUE_KEYS.items():
+            where = var.origin.keys.get(key)
+            value = getattr(var, field)
+            if where is None or where[0] != diagnostic.location.line or not isinstance(value, NodeIdExpr):
+                continue
+            if value.offset < 0:
+                return None  # `$NODEID-n` has no portable spelling
+            canonical = NodeIdExpr(offset=value.offset)
+            return Fix(f"write {canonical.canonical()}", safe=True, apply=_setter(var, field, canonical))
+    return None
+
+
+def _setter(var: Variable, field: str, value: NodeIdExpr) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        setattr(var, field, value)
+
+    return apply

@@ -5,6 +5,7 @@ from __future__ import annotations
 from ..model import Device, Severity
 from . import catalog
 from .config import Selection
+from .reader import reader_fix
 from .rules import RULES, Context, Finding, LintOptions
 from .suppress import Suppressions
 
@@ -17,12 +18,12 @@ def lint(device: Device, options: LintOptions | None = None, selection: Selectio
     options = options or LintOptions()
     selection = selection or Selection()
     file = device.source
+    context = Context(device, options)
     findings = [
-        Finding(d.code, d.severity, d.message, d.location)
+        Finding(d.code, d.severity, d.message, d.location, reader_fix(context, d))
         for d in device.diagnostics
         if selection.enabled(d.code, file)
     ]
-    context = Context(device, options)
     for rule in RULES.values():
         if rule.check is None or not selection.enabled(rule.code, file):
             continue

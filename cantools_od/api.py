@@ -8,9 +8,7 @@ import tempfile
 from pathlib import Path
 from typing import Literal
 
-from .eds.preserve import preserve
 from .eds.reader import read_bytes
-from .eds.writer import canonical_text
 from .model import Device
 
 Format = Literal["eds", "dcf", "json"]
@@ -60,6 +58,9 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> byt
     dcf = fmt == "dcf"
     if dcf and not device.is_dcf and device.node_id is None:
         raise ValueError("an EDS becomes a DCF for one node: give its node-ID")
+    from .eds.preserve import preserve  # writers load only when something is written
+    from .eds.writer import canonical_text
+
     making_dcf = dcf and not device.is_dcf  # an EDS becomes a DCF: values are resolved, layout is new
     if style == "preserve" and device._original is not None and not making_dcf:
         return preserve(device)

@@ -42,7 +42,6 @@ def command(
     """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
     from ..api import save
     from ..lint import LintOptions, has_errors, lint, load_selection
-    from ..lint.network import lint_network
 
     try:
         selection = load_selection(Path.cwd()).merged(_codes(select), _codes(ignore))
@@ -65,6 +64,8 @@ def command(
         devices.append(device)
         findings.extend(result)
     if network:
+        from ..lint.network import lint_network
+
         findings.extend(f for f in lint_network(devices, options) if selection.enabled(f.code, f.location.file))
     click.echo(_render(fmt, findings, len(files)), nl=False)
     sys.exit(EXIT_FINDINGS if has_errors(findings) else EXIT_OK)

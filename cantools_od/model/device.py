@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from enum import StrEnum
 
-from pydantic import BaseModel, Field, PrivateAttr
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr
 
 from .datatypes import DOMAIN, DataType, standard_type
 from .objects import Object, ObjectKind, Section, Variable
@@ -98,6 +98,8 @@ class RawSection(Section):
 
 class Device(BaseModel):
     """One device's object dictionary with its file-level descriptions."""
+
+    model_config = ConfigDict(defer_build=True)
 
     file_info: FileInfo = FileInfo()
     device_info: DeviceInfo = DeviceInfo()

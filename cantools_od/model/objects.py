@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from enum import IntEnum, StrEnum
 
-from pydantic import BaseModel
+from pydantic import BaseModel, ConfigDict
 
 from .datatypes import DataType, standard_type
 from .source import Origin
@@ -48,6 +48,9 @@ class Section(BaseModel):
     `comments` maps a canonical key name (or "" for the section header) to the
     comment lines written directly above it.
     """
+
+    # Schemas are built on first validation or dump: reading and linting need neither.
+    model_config = ConfigDict(defer_build=True)
 
     extra: dict[str, str] = {}
     comments: dict[str, list[str]] = {}

@@ -16,7 +16,7 @@ class Severity(StrEnum):
 class Location(BaseModel):
     """A place in a source file; line and column count from 1 (0 = unknown)."""
 
-    model_config = ConfigDict(frozen=True)
+    model_config = ConfigDict(frozen=True, defer_build=True)
 
     file: str = ""
     line: int = 0
@@ -31,6 +31,8 @@ class Origin(BaseModel):
 
     `keys` maps the canonical key name to (line, key column, value column).
     """
+
+    model_config = ConfigDict(defer_build=True)
 
     file: str = ""
     line: int = 0
@@ -57,7 +59,7 @@ class Origin(BaseModel):
 class Diagnostic(BaseModel):
     """One finding with a stable rule code."""
 
-    model_config = ConfigDict(frozen=True)
+    model_config = ConfigDict(frozen=True, defer_build=True)
 
     code: str
     severity: Severity

@@ -20,7 +20,7 @@ class NodeIdExpr(BaseModel):
     expressions are equal when their offsets are.
     """
 
-    model_config = ConfigDict(frozen=True)
+    model_config = ConfigDict(frozen=True, defer_build=True)
 
     offset: int
     text: str = ""
@@ -45,7 +45,7 @@ class NodeIdExpr(BaseModel):
 class TimeValue(BaseModel):
     """TIME_OF_DAY / TIME_DIFFERENCE: days since 1984-01-01 and ms after midnight."""
 
-    model_config = ConfigDict(frozen=True)
+    model_config = ConfigDict(frozen=True, defer_build=True)
 
     days: int
     ms: int
@@ -58,7 +58,7 @@ class TimeValue(BaseModel):
 class RawValue(BaseModel):
     """Text that could not be read as the entry's data type, kept verbatim."""
 
-    model_config = ConfigDict(frozen=True)
+    model_config = ConfigDict(frozen=True, defer_build=True)
 
     text: str
 

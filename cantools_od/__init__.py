@@ -8,9 +8,10 @@ __version__ = "0.1.0"
 
 if TYPE_CHECKING:
     from .api import dumps, load, loads, save
+    from .interop import to_canopen
     from .model import Device
 
-__all__ = ["Device", "__version__", "dumps", "load", "loads", "save"]
+__all__ = ["Device", "__version__", "dumps", "load", "loads", "save", "to_canopen"]
 
 
 def __getattr__(name: str) -> Any:
@@ -19,6 +20,10 @@ def __getattr__(name: str) -> Any:
         from . import api
 
         return getattr(api, name)
+    if name == "to_canopen":
+        from .interop import to_canopen
+
+        return to_canopen
     if name == "Device":
         from .model import Device
 

@@ -6,23 +6,18 @@ import os
 import re
 import shutil
 import subprocess
-import sys
 from collections import Counter
 from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
 
-try:
-    import support
-except ImportError:  # pytest run from the checkout root: tests/ is not on sys.path
-    sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-    import support
-
 from cantools_od.api import load
 from cantools_od.identifiers import assign
 from cantools_od.render.c import render
 from cantools_od.views.codegen import DeviceView, build_view
+
+import support
 
 GOLDEN = Path(__file__).resolve().parent / "golden" / "c"
 UPDATE_GOLDEN = os.environ.get("UPDATE_GOLDEN") == "1"

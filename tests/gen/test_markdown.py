@@ -1,0 +1,194 @@
+"""`cantools-od gen -t markdown`: golden files, tables and escaping checked with a real Markdown parser
+(markdown-it-py: CommonMark with GFM tables), stable anchors, COB-IDs, provenance."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from pykit import (
+    GOLDEN,
+    LINK,
+    check_markdown,
+    eds_text,
+    generate,
+    github_slug,
+    headings,
+    markdown_tokens,
+    odd_bits_eds,
+    pdo,
+    plain,
+    record,
+    run_gen,
+    tables,
+    var,
+    walk,
+)
+
+from cantools_od.render.escape import markdown_cell, markdown_text
+
+from support import EXAMPLES
+
+pytest.importorskip("markdown_it", reason="markdown-it-py is in the test extras")
+
+EXAMPLE_FILES = ["io_device.eds", "cia402_drive.eds"]
+HOSTILE = [
+    "<script>alert(1)</script>",
+    "a|b",
+    "*x* _y_ __z__",
+    "`tick` ``two``",
+    "[link](http://example.com) ![img](x.png)",
+    "&amp; &#60; &lt;",
+    "back\\slash\\|pipe\\",
+    "# heading",
+    "1. item",
+    "- bullet",
+    "> quote",
+    "http://example.com www.example.com foo@bar.com",
+    "$x^2$ ~~strike~~ :smile:",
+    "<!-- comment --> <div>block</div>",
+    "===",
+    "| --- |",
+]
+
+
+@pytest.mark.parametrize("name", EXAMPLE_FILES)
+def test_markdown_golden(name: str, tmp_path: Path) -> None:
+    stem = Path(name).stem
+    text = generate(EXAMPLES / name, "markdown", stem)
+    copy = tmp_path / name  # the same file elsewhere: the output does not depend on where it is
+    shutil.copy(EXAMPLES / name, copy)
+    assert generate(copy, "markdown", stem) == text
+    golden = GOLDEN / "markdown" / f"{stem}.md"
+    if os.environ.get("UPDATE_GOLDEN"):
+        golden.parent.mkdir(parents=True, exist_ok=True)
+        golden.write_text(text, encoding="utf-8")
+    assert golden.read_text(encoding="utf-8") == text, "run with UPDATE_GOLDEN=1 to accept the new output"
+
+
+@pytest.mark.parametrize("name", EXAMPLE_FILES)
+def test_examples_are_valid_documents(name: str) -> None:
+    text = generate(EXAMPLES / name, "markdown", Path(name).stem)
+    tokens = check_markdown(text)
+    found = tables(tokens)
+    objects = next(t for t in found if t[0][:2] == ["Index", "Name"])
+    assert len(objects) - 1 == text.count("\n### Object ")
+    assert all(re.fullmatch(r"[0-9A-F]{4}h", row[0]) for row in objects[1:])
+
+
+def test_device_summary_pdos_and_provenance() -> None:
+    text = generate(EXAMPLES / "io_device.eds", "markdown", "io_device")
+    cells = tables(markdown_tokens(text))
+    summary = dict(tuple(row) for row in cells[0][1:])
+    assert summary["Vendor"] == "cantools-od examples (0x00000CA7)"
+    assert summary["Product"] == "cantools-od example I/O module (0x00000401)"
+    assert summary["Revision number"] == "0x00010000"
+    assert summary["File"] == summary["FileName"] == "io_device.eds"
+    pdos = {row[0]: row for row in cells[1][1:]}
+    assert pdos["TPDO1"][1:3] == ["$NODEID+0x180", "255"] and pdos["TPDO1"][5] == "40"
+    tpdo1 = next(t for t in cells if t[0][-1] == "Identifier" and t[1][-1] == "read_input_8_bit_digital_inputs_1_to_8")
+    assert tpdo1[2] == ["2", "8..23", "16", "6401h sub 1h", "Analog input 1", "INTEGER16", tpdo1[2][-1]]
+    grids = [t for t in cells if t[0][0] == "Byte"]
+    assert grids[1][1:] == [[str(b)] + [n] * 8 for b, n in enumerate("12233")]  # TPDO1: 8 + 16 + 16 bits
+    assert grids[0][2] == ["1"] + ["2"] * 8  # RPDO1's dummy entry
+    objects = {row[0]: row for row in next(t for t in cells if t[0][0] == "Index")[1:]}
+    assert objects["1018h"][-1] == "io_device.eds:224"
+    assert objects["2000h"][5] == "TPDO2" and objects["1001h"][5] == "mappable" and objects["1000h"][5] == "no"
+    assert objects["1014h"][6] == "$NODEID+0x80"
+    details = next(t for t in cells if t[0][0] == "Sub" and t[1][-2] == "device_settings_highest_sub_index_supported")
+    assert details[2][1:8] == [
+        "Input filter enable",
+        "BOOLEAN",
+        "rw",
+        "no",
+        "true",
+        "\u2014",
+        "device_settings_input_filter_enable",
+    ]
+    assert details[3][6] == "1..1000" and details[3][-1] == "io_device.eds:549"
+
+
+def test_node_id_makes_cob_ids_numeric(tmp_path: Path) -> None:
+    result = run_gen(EXAMPLES / "io_device.eds", "-t", "markdown", "-o", tmp_path, "--node-id", "5")
+    assert result.exit_code == 0, result.output
+    text = (tmp_path / "io_device.md").read_text(encoding="utf-8")
+    pdos = {row[0]: row for row in tables(markdown_tokens(text))[1][1:]}
+    assert pdos["TPDO1"][1] == "0x185" and pdos["RPDO1"][1] == "0x205"
+    assert "| Node-ID | 5 |" in text
+    assert "0x85 (\\$NODEID\\+0x80)" in text
+
+
+def _hostile_eds() -> str:
+    objects = [var(0x2000 + n, name, 0x0009, "rw", name) for n, name in enumerate(HOSTILE)]
+    objects.append(record(0x2100, "a|b <b>", [(name, 0x0005, "rw", "0") for name in HOSTILE]))
+    objects.append(pdo("tx", 1, [(0x2100, 1, 8), (0x2100, 2, 8)]))
+    text = eds_text(objects)
+    text = text.replace("VendorName=cantools-od tests", "VendorName=<img src=x onerror=alert(1)>|*v*")
+    return text.replace("ProductName=Crafted", "ProductName=Object 2000h | `x` <h1>")
+
+
+def test_hostile_text_renders_literally(tmp_path: Path) -> None:
+    path = tmp_path / "hostile.eds"
+    path.write_text(_hostile_eds(), encoding="utf-8")
+    text = generate(path, "markdown", "hostile")
+    tokens = check_markdown(text)
+    assert headings(tokens)[0] == "Object dictionary: Object 2000h | `x` <h1>"
+    found = tables(tokens)
+    summary = dict(tuple(row) for row in found[0][1:])
+    assert summary["Vendor"] == "<img src=x onerror=alert(1)>|*v*"
+    objects = {row[0]: row for row in next(t for t in found if t[0][0] == "Index")[1:]}
+    for number, name in enumerate(HOSTILE):
+        row = objects[f"{0x2000 + number:04X}h"]
+        assert row[1] == name.strip() and row[6] == f'"{name}"', row
+    assert objects["2100h"][1] == "a|b <b>"
+    subs = next(t for t in found if t[0][0] == "Sub" and t[1][-2].startswith("a_b_b_"))
+    assert [row[1] for row in subs[2:]] == [name.strip() for name in HOSTILE]
+    tpdo1 = next(t for t in found if t[0][0] == "#")
+    assert [row[4] for row in tpdo1[1:]] == HOSTILE[:2]
+
+
+def test_anchors_depend_on_indices_only(tmp_path: Path) -> None:
+    path = tmp_path / "odd_bits.eds"
+    path.write_text(odd_bits_eds(), encoding="ascii")
+    before = headings(markdown_tokens(generate(path, "markdown", "odd_bits")))
+    path.write_text(odd_bits_eds().replace("Odd values", "Renamed: odd *values*"), encoding="ascii")
+    after_text = generate(path, "markdown", "odd_bits")
+    after = headings(check_markdown(after_text))
+    slugs = [github_slug(h) for h in after]
+    assert slugs[1:] == [github_slug(h) for h in before][1:]
+    assert "object-2100h" in slugs and "tpdo4" in slugs and "rpdo2" in slugs
+    objects = [s for s in slugs[1:] if s.startswith("object-") and s != "object-details"]
+    assert objects and all(re.fullmatch(r"object-[0-9a-f]{4}h", s) for s in objects)
+    assert set(LINK.findall(after_text)) <= set(slugs)
+
+
+def test_odd_bits_layout_table(tmp_path: Path) -> None:
+    path = tmp_path / "odd_bits.eds"
+    path.write_text(odd_bits_eds(), encoding="ascii")
+    found = tables(check_markdown(generate(path, "markdown", "odd_bits")))
+    grids = [t for t in found if t[0][0] == "Byte"]
+    tpdo1 = grids[2]  # RPDO1, RPDO2, TPDO1, ...
+    assert tpdo1[1] == ["0", *["2"] * 7, "1"]  # bit 0: flag A, bits 1..: INTEGER48
+    assert tpdo1[7] == ["6", "9", "8", "7", "6", "5", "4", "3", "2"]  # bit 48: INTEGER48's last, then flags
+    assert tpdo1[8] == ["7", *["10"] * 8]
+    rpdo2 = grids[1]
+    assert rpdo2[3] == ["2", *["2"] * 8]  # the dummy UNSIGNED8 is entry 2
+
+
+@given(st.text(st.characters(codec="utf-8"), max_size=40) | st.text("\\|`*_<>&[]()!#-+.:=~$^@ ab1\n", max_size=20))
+@settings(max_examples=400, deadline=None)
+def test_escaped_text_renders_literally(text: str) -> None:
+    cell, inline = markdown_cell(text), markdown_text(text)
+    document = f"| a | b |\n| --- | --- |\n| {cell} | x |\n\nSay {inline} now.\n"
+    tokens = markdown_tokens(document)
+    kinds = {t.type for t in walk(tokens)}
+    assert not kinds & {"html_inline", "html_block", "em_open", "strong_open", "s_open", "link_open", "image"}
+    shown = " ".join("".join(" " if ord(c) < 0x20 or ord(c) == 0x7F else c for c in text).split())
+    assert tables(tokens) == [[["a", "b"], [shown or "\u2014", "x"]]]
+    paragraph = next(t for t in tokens if t.type == "inline" and t.content.startswith("Say"))
+    assert plain(paragraph.children or []) == f"Say {shown} now." if shown else "Say  now."

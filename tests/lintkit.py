@@ -1,4 +1,4 @@
-"""Small EDS texts and helpers for the tests of the structure, objlists, values, identity and portability rules.
+"""Small EDS texts and helpers for the tests of the syntax, objects, dcf, objlists, values, identity and portability rules.
 
 Most tests lint a fragment (an object or two) and look only at the code under test; `BASE` is a
 complete, valid EDS for the tests that need a whole file. Locations are (line, column), both from 1.
@@ -13,7 +13,7 @@ from cantools_od.lint import Finding, LintOptions, lint
 from cantools_od.lint.rules import RULES
 from cantools_od.model import Device
 
-FAMILIES = ("structure", "objlists", "values", "identity", "portability")
+FAMILIES = ("syntax", "objects", "dcf", "objlists", "values", "identity", "portability")
 
 BASE = """\
 [FileInfo]

@@ -6,8 +6,8 @@ from collections.abc import Callable, Iterator
 
 from ..eds.keys import BAUD_RATES
 from ..model import Device, Location, Severity, Value
+from .common import present
 from .rules import Context, Finding, Fix, rule
-from .structure import present
 
 E, W = Severity.ERROR, Severity.WARNING
 

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from ..eds import keys
 from ..model import Device, Dialect, NodeIdExpr, Object, ObjectKind, Section, Severity, ValueKind, Variable
 from .rules import Context, Finding, rule
-from .structure import EXTENSION_KEYS, RESERVED_DEVICE_INFO
+from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO
 
 W, INFO = Severity.WARNING, Severity.INFO
 

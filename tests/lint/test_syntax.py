@@ -100,8 +100,7 @@ def test_comment_gap_fix_is_unsafe() -> None:
 
 # ---- whole files: the seven families (syntax, objects, dcf, objlists, values, identity, portability) together --
 
-# lintkit.FAMILIES still names the former `structure` family; its rules are now syntax, objects and dcf.
-OURS = {code for code, rule in RULES.items() if rule.family in (*FAMILIES, "syntax", "objects", "dcf")}
+OURS = {code for code, rule in RULES.items() if rule.family in FAMILIES}
 
 
 @pytest.mark.parametrize("name", ["io_device.eds", "cia402_drive.eds"])

@@ -1,0 +1,218 @@
+"""Rule family: dcf — DCF-only keys, Upload/DownloadFile, [DeviceComissioning] NodeID, modules (cia306.md §10-§11)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from ..model import Device, Object, RawSection, Severity, Variable
+from .common import explicit_vars, file_start, given, invalid, where
+from .rules import Context, Finding, rule
+
+E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
+
+
+# ---- DCF -------------------------------------------------------------------------------------------------------
+
+_DCF_KEYS = ("ParameterValue", "Denotation", "ParamRefd", "UploadFile", "DownloadFile")
+
+
+@rule(
+    "EDS050",
+    W,
+    "UploadFile/DownloadFile with a mismatching AccessType",
+    """
+UploadFile receives the content of a DOMAIN read from the device, so the object should be `ro`;
+DownloadFile is written to the device, so the object should be `wo` (cia306.md §10). lely forces
+these access types and warns.""",
+    "[1F50]\nParameterName=Program\nObjectType=0x2\nAccessType=rw\nDownloadFile=firmware.bin",
+)
+def file_access(ctx: Context) -> Iterator[Finding]:
+    for obj, subindex, var in explicit_vars(ctx.device):
+        if not _domain(ctx.device, obj, var):
+            continue  # EDS051
+        access = var.access.value if var.access is not None else "rw"
+        for key, path, wanted in (("UploadFile", var.upload_file, "ro"), ("DownloadFile", var.download_file, "wo")):
+            if path and access != wanted:
+                message = f"{where(obj, subindex)}: {key} with AccessType {access}; expected {wanted}"
+                yield ctx.report("EDS050", message, ctx.at(var, key))
+
+
+def _domain(device: Device, obj: Object, var: Variable) -> bool:
+    dtype = device.entry_type(var, obj)
+    return dtype is not None and dtype.index == 0x000F
+
+
+@rule(
+    "EDS051",
+    E,
+    "UploadFile/DownloadFile on an entry that is not a DOMAIN",
+    """
+UploadFile and DownloadFile name files that hold the content of a DOMAIN (ObjectType 0x2 or
+DataType 0x000F); other entries have a value of their data type.""",
+    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=ro\nUploadFile=speed.bin",
+)
+def file_domain(ctx: Context) -> Iterator[Finding]:
+    for obj, subindex, var in explicit_vars(ctx.device):
+        if _domain(ctx.device, obj, var):
+            continue
+        for key, path in (("UploadFile", var.upload_file), ("DownloadFile", var.download_file)):
+            if path:
+                message = f"{where(obj, subindex)}: {key} on an entry that is not a DOMAIN"
+                yield ctx.report("EDS051", message, ctx.at(var, key))
+
+
+@rule(
+    "EDS052",
+    W,
+    "DCF-only key in an EDS",
+    """
+ParameterValue, Denotation, ParamRefd, UploadFile and DownloadFile (and LastEDS in [FileInfo])
+describe one configured node and belong in a DCF (cia306.md §10). In an EDS, tools ignore them
+or take them for the device's defaults.""",
+    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nParameterValue=100",
+)
+def dcf_keys(ctx: Context) -> Iterator[Finding]:
+    device = ctx.device
+    if device.is_dcf:
+        return
+    if device.file_info.last_eds:
+        yield ctx.report("EDS052", "LastEDS in an EDS", ctx.at(device.file_info, "LastEDS"))
+    for obj, subindex, var in explicit_vars(device):
+        for key in _DCF_KEYS:
+            if given(var, key):
+                yield ctx.report("EDS052", f"{where(obj, subindex)}: {key} in an EDS", ctx.at(var, key))
+
+
+@rule(
+    "EDS060",
+    E,
+    "DCF without [DeviceComissioning] NodeID",
+    """
+A DCF describes one configured node: [DeviceComissioning] (spelled with one "m") gives its
+NodeID, and `$NODEID` values are resolved with it. Without it the DCF's COB-IDs are unknown;
+lely dcfchk fails with `$NODEID not defined` unless a node-ID is given on the command line.""",
+    "[DeviceComissioning]\nNodeName=Drive\nBaudrate=500",
+)
+def dcf_node_id(ctx: Context) -> Iterator[Finding]:
+    device = ctx.device
+    if not device.is_dcf:
+        return
+    section = device.commissioning
+    if section is None:
+        yield ctx.report("EDS060", "DCF without [DeviceComissioning]", file_start(ctx))
+    elif section.node_id is None and not invalid(section, "NodeID"):
+        yield ctx.report("EDS060", "[DeviceComissioning] has no NodeID", ctx.at(section, "NodeID"))
+
+
+@rule(
+    "EDS062",
+    E,
+    "NodeID outside 1..127",
+    """
+CANopen node-IDs are 1..127. lely also writes 255 for "not configured" (EDS063).""",
+    "[DeviceComissioning]\nNodeID=128",
+)
+def node_id_range(ctx: Context) -> Iterator[Finding]:
+    section = ctx.device.commissioning
+    node_id = section.node_id if section is not None else None
+    if section is not None and node_id is not None and not 1 <= node_id <= 127 and node_id != 255:
+        yield ctx.report("EDS062", f"NodeID={node_id} is not a node-ID (1..127)", ctx.value_at(section, "NodeID"))
+
+
+@rule(
+    "EDS063",
+    INFO,
+    "NodeID 255: node-ID not configured",
+    """
+lely writes `NodeID=255` (0xFF) for a node whose node-ID is assigned later (LSS). `$NODEID`
+values stay unresolved.""",
+    "[DeviceComissioning]\nNodeID=0xFF",
+)
+def node_id_unset(ctx: Context) -> Iterator[Finding]:
+    section = ctx.device.commissioning
+    if section is not None and section.node_id == 255:
+        yield ctx.report("EDS063", "NodeID=255: node-ID not configured", ctx.value_at(section, "NodeID"))
+
+
+# ---- module concept --------------------------------------------------------------------------------------------
+
+_MODULE_NAME = re.compile(r"m([1-9][0-9]*)(moduleinfo|fixedobjects|subextends|fixed|subext)(.*)\Z", re.IGNORECASE)
+
+
+def _count(raw: RawSection, key: str) -> int | None:
+    for written, text in raw.entries.items():
+        if written.lower() == key.lower():
+            try:
+                return int(text.strip(), 0)
+            except ValueError:
+                return None
+    return None
+
+
+def _listed(raw: RawSection) -> dict[str, str]:
+    return {k: v for k, v in raw.entries.items() if k.isdigit()}
+
+
+@rule(
+    "EDS070",
+    E,
+    "Module sections inconsistent",
+    """
+In the module concept (cia306.md §11) [SupportedModules] NrOfEntries counts the modules
+M1..Mn, each with an [M<x>ModuleInfo]; [M<x>FixedObjects] and [M<x>SubExtends] count their
+numbered entries in NrOfEntries, and each listed index has its [M<x>Fixed<index>] or
+[M<x>SubExt<index>] section; [ConnectedModules] lists module numbers 1..n.""",
+    "[SupportedModules]\nNrOfEntries=2\n[M1ModuleInfo]\nProductName=Input module",
+)
+def modules(ctx: Context) -> Iterator[Finding]:
+    sections = {raw.name.lower(): raw for raw in ctx.device.module_sections}
+    supported = sections.get("supportedmodules")
+    total = _count(supported, "NrOfEntries") if supported is not None else None
+    infos = set()
+    for raw in ctx.device.module_sections:
+        match = _MODULE_NAME.match(raw.name)
+        if match is None:
+            continue
+        number, part = int(match.group(1)), match.group(2).lower()
+        if part == "moduleinfo":
+            infos.add(number)
+        if total is not None and number > total:
+            yield ctx.report("EDS070", f"[{raw.name}]: module {number} but NrOfEntries={total}", ctx.at(raw))
+        if part in ("fixedobjects", "subextends") and not match.group(3):
+            yield from _module_list(ctx, raw, number, "Fixed" if part == "fixedobjects" else "SubExt", sections)
+    if supported is not None and total is not None:
+        for number in sorted(set(range(1, total + 1)) - infos):
+            yield ctx.report("EDS070", f"module {number}: no [M{number}ModuleInfo]", ctx.at(supported))
+    for name in ("supportedmodules", "connectedmodules"):
+        listing = sections.get(name)
+        if listing is not None:
+            yield from _counted(ctx, listing)
+    connected = sections.get("connectedmodules")
+    if connected is not None and total is not None:
+        for key, text in _listed(connected).items():
+            if not (text.strip().isdigit() and 1 <= int(text) <= total):
+                message = f"[{connected.name}] {key}={text}: not a module number 1..{total}"
+                yield ctx.report("EDS070", message, ctx.at(connected, key))
+
+
+def _counted(ctx: Context, raw: RawSection) -> Iterator[Finding]:
+    count, entries = _count(raw, "NrOfEntries"), _listed(raw)
+    if raw.name.lower() != "supportedmodules" and count != len(entries):
+        message = f"[{raw.name}]: NrOfEntries={count} but {len(entries)} entries"
+        yield ctx.report("EDS070", message, ctx.at(raw, "NrOfEntries"))
+
+
+def _module_list(
+    ctx: Context, raw: RawSection, number: int, prefix: str, sections: dict[str, RawSection]
+) -> Iterator[Finding]:
+    yield from _counted(ctx, raw)
+    for key, text in _listed(raw).items():
+        try:
+            index = int(text.strip(), 0)
+        except ValueError:
+            yield ctx.report("EDS070", f"[{raw.name}] {key}={text}: not an object index", ctx.at(raw, key))
+            continue
+        if f"m{number}{prefix}{index:04x}".lower() not in sections:
+            message = f"[{raw.name}] {key}=0x{index:04X}: no [M{number}{prefix}{index:04X}] section"
+            yield ctx.report("EDS070", message, ctx.at(raw, key))

@@ -1,0 +1,342 @@
+"""Rule family: objects — obligation matrix, sub-objects, sub-index 0 and FFh, data types (cia306.md §7-§8, §12-§13)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
+from ..model.datatypes import STANDARD_TYPES
+from .common import explicit_objects, explicit_vars, given, where
+from .rules import Context, Finding, Fix, rule
+
+E = Severity.ERROR
+
+_COMPOUND = (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
+_TYPE_KINDS = (ObjectKind.DEFTYPE, ObjectKind.DEFSTRUCT)
+
+
+def compact(obj: Object) -> bool:
+    return bool(obj.compact_sub_obj)
+
+
+# ---- object sections -------------------------------------------------------------------------------------------
+
+
+def _mandatory(obj: Object, sub: bool) -> tuple[str, ...]:
+    if sub or obj.kind in (ObjectKind.VAR, ObjectKind.DEFTYPE) or (obj.kind in _COMPOUND and compact(obj)):
+        return ("ParameterName", "DataType", "AccessType")
+    if obj.kind in _COMPOUND:
+        return ("ParameterName", "SubNumber")
+    return ("ParameterName",)
+
+
+def _forbidden(obj: Object, sub: bool) -> tuple[str, ...]:
+    if sub or obj.kind in (ObjectKind.VAR, ObjectKind.DEFTYPE):
+        return ("SubNumber",)  # CompactSubObj: EDS022
+    if obj.kind in _COMPOUND and not compact(obj):
+        return ("DataType", "AccessType", "DefaultValue", "PDOMapping", "LowLimit", "HighLimit", "ParameterValue")
+    if obj.kind is ObjectKind.DOMAIN:
+        return ("PDOMapping", "SubNumber", "LowLimit", "HighLimit")
+    return ()
+
+
+@rule(
+    "EDS020",
+    E,
+    "Mandatory key missing",
+    """
+The obligation matrix of CiA 306 (cia306.md §7.3) makes ParameterName mandatory everywhere;
+DataType and AccessType for VAR, DEFTYPE, sub-objects and CompactSubObj objects; SubNumber for
+ARRAY, RECORD and DEFSTRUCT without CompactSubObj. A missing key equals an empty one. Tools
+crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
+    "[2000]\nParameterName=Speed\nDataType=0x0006",
+)
+def missing_keys(ctx: Context) -> Iterator[Finding]:
+    for obj, subindex, var in explicit_vars(ctx.device):
+        for key in _mandatory(obj, subindex is not None):
+            if not given(var, key):
+                kind = "a sub-object" if subindex is not None else f"{obj.kind.name}"
+                empty = var.origin is not None and key in var.origin.keys
+                message = f"{where(obj, subindex)}: {key} is empty" if empty else f"{where(obj, subindex)}: no {key}"
+                yield ctx.report("EDS020", f"{message}; {kind} needs it", ctx.at(var, key))
+
+
+@rule(
+    "EDS024",
+    E,
+    "Key not allowed for this object type",
+    """
+Per the obligation matrix (cia306.md §7.3) ARRAY, RECORD and DEFSTRUCT objects without
+CompactSubObj describe their values in sub-objects and carry no DataType, AccessType,
+DefaultValue, PDOMapping or limits; DOMAIN objects have no PDOMapping, SubNumber or limits; VAR
+and sub-objects have no SubNumber. Tools disagree about what such keys mean.""",
+    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=5\nAccessType=ro",
+)
+def forbidden_keys(ctx: Context) -> Iterator[Finding]:
+    for obj, subindex, var in explicit_vars(ctx.device):
+        for key in _forbidden(obj, subindex is not None):
+            if _written(var, key, subindex is not None):
+                kind = "a sub-object" if subindex is not None else f"an object of type {obj.kind.name}"
+                yield ctx.report("EDS024", f"{where(obj, subindex)}: {key} is not allowed on {kind}", ctx.at(var, key))
+
+
+def _written(var: Variable, key: str, sub: bool) -> bool:
+    if sub and key in ("SubNumber", "CompactSubObj"):  # a sub-object section keeps them in `extra`
+        return bool(var.extra.get(key, "").strip())
+    return given(var, key)
+
+
+@rule(
+    "EDS021",
+    E,
+    "SubNumber does not match the sub-object sections",
+    """
+SubNumber counts the sub-objects an ARRAY, RECORD or DEFSTRUCT implements, sub-index 0 included
+(and FFh excluded); each needs a `[<index>sub<n>]` section. A wrong count makes tools allocate
+the wrong number of entries or reject the file.""",
+    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=4\n[1018sub0]\n...\n[1018sub1]\n...",
+)
+def sub_number(ctx: Context) -> Iterator[Finding]:
+    for obj in explicit_objects(ctx.device):
+        if obj.kind not in _COMPOUND or compact(obj) or obj.sub_number is None:
+            continue
+        count = _explicit_sub_count(obj)
+        if obj.sub_number != count:
+            message = f"[{obj.index:04X}]: SubNumber={obj.sub_number} but {count} sub-object sections"
+            fix = Fix(f"set SubNumber={count}", True, _fix_sub_number(obj.index))
+            yield ctx.report("EDS021", message, ctx.value_at(obj, "SubNumber"), fix)
+
+
+def _explicit_sub_count(obj: Object) -> int:
+    return sum(1 for subindex, sub in obj.subs.items() if not sub.implicit and subindex != 0xFF)
+
+
+def _fix_sub_number(index: int) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        obj = device.objects.get(index)
+        if obj is not None:
+            obj.sub_number = _explicit_sub_count(obj)
+
+    return apply
+
+
+@rule(
+    "EDS022",
+    E,
+    "CompactSubObj misused",
+    """
+CompactSubObj (cia306.md §8.1) describes the sub-objects of an ARRAY (lely: also RECORD)
+implicitly: sub0 plus subs 1..n copied from the object. It is not allowed on VAR, DOMAIN or
+sub-objects, must be 1..254, and excludes both a non-zero SubNumber and `[<index>sub<n>]`
+sections, which would describe the same sub-objects twice.""",
+    "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=4\nSubNumber=5",
+)
+def compact_misuse(ctx: Context) -> Iterator[Finding]:
+    for obj in explicit_objects(ctx.device):
+        name = f"[{obj.index:04X}]"
+        for subindex, sub in obj.subs.items():
+            if not sub.implicit and sub.extra.get("CompactSubObj", "").strip() not in ("", "0"):
+                yield ctx.report("EDS022", f"{where(obj, subindex)}: CompactSubObj on a sub-object", ctx.at(sub))
+        if not obj.compact_sub_obj:
+            continue
+        if obj.kind not in _COMPOUND:
+            message = f"{name}: CompactSubObj on an object of type {obj.kind.name}"
+            yield ctx.report("EDS022", message, ctx.at(obj, "CompactSubObj"))
+            continue
+        if not 1 <= obj.compact_sub_obj <= 0xFE:
+            message = f"{name}: CompactSubObj={obj.compact_sub_obj} is not 1..254"
+            yield ctx.report("EDS022", message, ctx.value_at(obj, "CompactSubObj"))
+        if obj.sub_number:
+            message = f"{name}: SubNumber={obj.sub_number} together with CompactSubObj (must be absent or 0)"
+            yield ctx.report("EDS022", message, ctx.at(obj, "SubNumber"))
+        for subindex, sub in obj.subs.items():
+            if not sub.implicit:
+                message = f"{where(obj, subindex)}: sub-object section of a CompactSubObj object"
+                yield ctx.report("EDS022", message, ctx.at(sub))
+
+
+@rule(
+    "EDS023",
+    E,
+    "ObjFlags reserved bits set",
+    """
+ObjFlags (cia306.md §7.5) defines bit 0 (refuse write on download) and bit 1 (refuse read on
+scan); bits 2-31 are reserved and must be 0. lely ORs ObjFlags into its own flag word, where
+reserved bits switch on lely-internal behaviour.""",
+    "[2000]\nParameterName=Setpoint\nDataType=0x0006\nAccessType=rw\nObjFlags=0x4",
+)
+def obj_flags(ctx: Context) -> Iterator[Finding]:
+    for obj, subindex, var in explicit_vars(ctx.device):
+        if var.obj_flags is not None and var.obj_flags & ~0x3:
+            message = f"{where(obj, subindex)}: ObjFlags=0x{var.obj_flags:X} sets reserved bits (only bits 0 and 1)"
+            yield ctx.report("EDS023", message, ctx.value_at(var, "ObjFlags"))
+
+
+def _has_subs(obj: Object) -> bool:
+    return obj.kind in _COMPOUND and not compact(obj)
+
+
+@rule(
+    "EDS025",
+    E,
+    "Sub-index 0 missing or not UNSIGNED8",
+    """
+Every ARRAY, RECORD and DEFSTRUCT has a sub-index 0 of type UNSIGNED8 (0x0005) holding the
+highest sub-index (or the number of entries). Tools read it to size the object; without it, or
+with another type, they reject the object or read the wrong count.""",
+    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=1\n[1018sub0]\nParameterName=Count\nDataType=0x0007",
+)
+def sub0_type(ctx: Context) -> Iterator[Finding]:
+    for obj in explicit_objects(ctx.device):
+        if not _has_subs(obj):
+            continue
+        sub0 = obj.subs.get(0)
+        if sub0 is None:
+            yield ctx.report("EDS025", f"[{obj.index:04X}]: no sub-index 0 ({obj.kind.name})", ctx.at(obj))
+        elif sub0.data_type is not None and ctx.device.entry_type(sub0, obj) is not STANDARD_TYPES[0x0005]:
+            message = f"[{obj.index:04X}sub0]: DataType=0x{sub0.data_type:04X}; sub-index 0 is UNSIGNED8 (0x0005)"
+            yield ctx.report("EDS025", message, ctx.value_at(sub0, "DataType"))
+
+
+def _counts_entries(obj: Object, sub0: SubObject) -> bool:
+    """Objects whose sub0 is a number of valid entries rather than the highest sub-index."""
+    if obj.index == 0x1003 or 0x1400 <= obj.index <= 0x1BFF:  # error history; PDOs (PDO010/PDO040)
+        return True
+    return sub0.access is not None and sub0.access.writable
+
+
+@rule(
+    "EDS026",
+    E,
+    "Sub-index 0 below the highest sub-index",
+    """
+Sub-index 0 of an ARRAY or RECORD holds the highest sub-index it implements; sub-indices need not
+be consecutive (1010h may have sub0 and sub4 only, sub0=4). A smaller value hides the upper
+sub-objects. Not checked: 1003h (sub0 counts the errors), PDO objects (see the PDO rules) and
+objects whose sub0 is writable, where sub0 counts the valid entries.""",
+    "[1018]\n...\n[1018sub0]\nParameterName=Highest sub-index\nDataType=0x0005\nAccessType=ro\nDefaultValue=2\n"
+    "[1018sub1]\n...\n[1018sub2]\n...\n[1018sub3]\n...",
+)
+def sub0_value(ctx: Context) -> Iterator[Finding]:
+    for obj in explicit_objects(ctx.device):
+        sub0 = obj.subs.get(0)
+        if not _has_subs(obj) or sub0 is None or _counts_entries(obj, sub0):
+            continue
+        highest = _highest(obj)
+        if isinstance(sub0.default, int) and not isinstance(sub0.default, bool) and sub0.default < highest:
+            message = f"[{obj.index:04X}sub0]: DefaultValue={sub0.default} but sub-index {highest} exists"
+            fix = Fix(f"set DefaultValue={highest}", True, _fix_sub0(obj.index))
+            yield ctx.report("EDS026", message, ctx.value_at(sub0, "DefaultValue"), fix)
+
+
+def _highest(obj: Object) -> int:
+    return max((subindex for subindex in obj.subs if subindex != 0xFF), default=0)
+
+
+def _fix_sub0(index: int) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        obj = device.objects.get(index)
+        sub0 = obj.subs.get(0) if obj is not None else None
+        if obj is not None and sub0 is not None and isinstance(sub0.default, int):
+            sub0.default = max(sub0.default, _highest(obj))
+
+    return apply
+
+
+@rule(
+    "EDS027",
+    E,
+    "Sub-index FFh described",
+    """
+Sub-index FFh is reserved: it holds the object's data type and object code, is not counted by
+SubNumber and is never described in an EDS.""",
+    "[2000subFF]\nParameterName=Structure\nDataType=0x0007\nAccessType=ro",
+)
+def sub_ff(ctx: Context) -> Iterator[Finding]:
+    for obj in explicit_objects(ctx.device):
+        sub = obj.subs.get(0xFF)
+        if sub is not None and not sub.implicit:
+            yield ctx.report("EDS027", f"[{obj.index:04X}subFF]: sub-index FFh is reserved", ctx.at(sub))
+
+
+@rule(
+    "EDS028",
+    E,
+    "ARRAY elements of different data types",
+    """
+All elements (sub-index 1 and above) of an ARRAY share one data type; only a RECORD mixes types.
+Tools and generated code store an ARRAY as one C array.""",
+    "[2000sub1]\nDataType=0x0006\n...\n[2000sub2]\nDataType=0x0007",
+)
+def array_types(ctx: Context) -> Iterator[Finding]:
+    for obj in explicit_objects(ctx.device):
+        if obj.kind is not ObjectKind.ARRAY or compact(obj):
+            continue
+        elements = [(i, s) for i, s in obj.subs.items() if 1 <= i <= 0xFE and s.data_type is not None]
+        if not elements:
+            continue
+        first_index, first = elements[0]
+        for subindex, sub in elements[1:]:
+            if sub.data_type != first.data_type:
+                message = (
+                    f"[{obj.index:04X}sub{subindex:X}]: DataType=0x{sub.data_type:04X} but sub{first_index:X} "
+                    f"has 0x{first.data_type:04X}; ARRAY elements share one type"
+                )
+                yield ctx.report("EDS028", message, ctx.value_at(sub, "DataType"))
+
+
+# ---- data types ------------------------------------------------------------------------------------------------
+
+
+def _typed_vars(device: Device) -> Iterator[tuple[Object, int | None, Variable]]:
+    """Entries whose DataType means something (not ARRAY/RECORD/DEFSTRUCT objects without CompactSubObj)."""
+    for obj, subindex, var in explicit_vars(device):
+        if subindex is not None or not _has_subs(obj):
+            yield obj, subindex, var
+
+
+@rule(
+    "EDS080",
+    E,
+    "DataType not defined",
+    """
+DataType names a CiA 301 data type (0001h-001Bh, 0020h-0023h) or a type the file defines with a
+DEFTYPE or DEFSTRUCT object at that index. Reserved indices (000Eh, 0017h, 001Ch-001Fh) and
+custom types without their definition cannot be read: python-canopen falls back to DOMAIN,
+canmatrix and lely fail.""",
+    "[2000]\nParameterName=Gain\nDataType=0x0040\nAccessType=rw",
+)
+def undefined_types(ctx: Context) -> Iterator[Finding]:
+    objects = ctx.device.objects
+    for obj, subindex, var in _typed_vars(ctx.device):
+        dtype = var.data_type
+        if dtype is None or dtype in STANDARD_TYPES:
+            continue
+        definition = objects.get(dtype)
+        if 0 < dtype < 0x1000 and definition is not None and definition.kind in _TYPE_KINDS:
+            continue
+        reason = "reserved data type index" if 0 < dtype < 0x0020 else "no DEFTYPE/DEFSTRUCT object defines it"
+        message = f"{where(obj, subindex)}: DataType=0x{dtype:04X}: {reason}"
+        yield ctx.report("EDS080", message, ctx.value_at(var, "DataType"))
+
+
+@rule(
+    "EDS081",
+    E,
+    "Object type does not fit the data-type index area",
+    """
+Indices 0001h-0FFFh hold data types: DEFTYPE and DEFSTRUCT objects belong there and nowhere
+else, and nothing else belongs there (cia306.md §13). Index 0000h is not used.""",
+    "[2000]\nParameterName=My type\nObjectType=0x5\nDataType=0x0007\nAccessType=ro",
+)
+def type_area(ctx: Context) -> Iterator[Finding]:
+    for obj in explicit_objects(ctx.device):
+        in_area = 0 < obj.index < 0x1000
+        if obj.index == 0:
+            yield ctx.report("EDS081", "[0000]: index 0000h is not used", ctx.at(obj))
+        elif obj.kind in _TYPE_KINDS and not in_area:
+            message = f"[{obj.index:04X}]: {obj.kind.name} outside the data-type area 0001h-0FFFh"
+            yield ctx.report("EDS081", message, ctx.at(obj, "ObjectType"))
+        elif obj.kind not in _TYPE_KINDS and in_area:
+            message = f"[{obj.index:04X}]: {obj.kind.name} in the data-type area; only DEFTYPE/DEFSTRUCT belong there"
+            yield ctx.report("EDS081", message, ctx.at(obj, "ObjectType"))

@@ -1,4 +1,4 @@
-"""Small EDS texts and helpers for the tests of the syntax, objects, dcf, objlists, values, identity and portability rules.
+"""Small EDS texts and helpers for the tests of the CiA 306 structure, value, identity and portability rules.
 
 Most tests lint a fragment (an object or two) and look only at the code under test; `BASE` is a
 complete, valid EDS for the tests that need a whole file. Locations are (line, column), both from 1.

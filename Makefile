@@ -14,8 +14,10 @@ $(STAMP): pyproject.toml $(shell find cantools_od templates schemas -type f -not
 	touch $(STAMP)
 
 demo: $(STAMP)
-	$(BIN)/cantools-od dump eds/cia402_drive.eds
+	$(BIN)/cantools-od lint eds/cia402_drive.eds
 	$(BIN)/cantools-od pdo eds/cia402_drive.eds --node-id 5
+	$(BIN)/cantools-od gen eds/cia402_drive.eds -t c -t rust -t python -t markdown -o build/demo --name drive
+	@echo "generated:" && ls build/demo
 
 test: $(STAMP)
 	cd tests && ../$(BIN)/python -m pytest -q -p no:cacheprovider ../tests

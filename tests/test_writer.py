@@ -127,3 +127,10 @@ def test_save_writes_only_on_change_and_atomically(tmp_path: Path) -> None:
 def test_non_ascii_names_survive_canonical() -> None:
     device = loads("[2000]\nParameterName=Druck ‰\nDataType=0x0005\nAccessType=ro\n".encode())
     assert loads(dumps(device, style="canonical")).objects[0x2000].name == "Druck ‰"
+
+
+def test_preserve_keeps_the_radix_of_an_edited_number() -> None:
+    original = b"[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nDefaultValue=500\n"
+    device = loads(original)
+    device.objects[0x1017].default = 250
+    assert dumps(device) == original.replace(b"=500", b"=250")

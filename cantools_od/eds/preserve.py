@@ -73,6 +73,17 @@ def preserve(device: Device) -> bytes:
     return (b"\xef\xbb\xbf" if original.startswith(b"\xef\xbb\xbf") else b"") + data
 
 
+_DECIMAL = re.compile(r"-?(?:0|[1-9][0-9]*)\Z")
+_HEX = re.compile(r"-?0x[0-9A-F]+\Z")
+
+
+def _in_style_of(old: str, new: str) -> str:
+    """A changed number keeps the radix it was written in: `500` becomes `250`, not `0x00FA`."""
+    if _DECIMAL.match(old) and _HEX.match(new):
+        return str(int(new, 16))
+    return new
+
+
 def _entries(by_name: dict[str, OutSection]) -> dict[str, dict[str, str]]:
     return {name: section.entries for name, section in by_name.items()}
 
@@ -125,7 +136,8 @@ def _plan(
                 for entry in entries:
                     edits[entry.line] = []
             elif new.entries[key] != old.entries.get(key):
-                edits[last.line] = [raw[: last.value_col - 1] + new.entries[key] + (_eol(raw) or eol)]
+                text = _in_style_of(last.value, new.entries[key])
+                edits[last.line] = [raw[: last.value_col - 1] + text + (_eol(raw) or eol)]
         added = [f"{key}={text}{eol}" for key, text in new.entries.items() if key not in by_key]
         if added:
             kept = edits.get(last_line, [lines[last_line - 1]])

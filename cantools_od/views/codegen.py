@@ -224,7 +224,7 @@ def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryVie
         return f"{where}, which does not exist"
     if not entry.is_scalar or entry.bits is None:
         return f"{where}, whose type {entry.data_type.name if entry.data_type else 'is unknown'} has no fixed size"
-    if bits != entry.bits:
+    if bits != entry.bits and not (entry.kind is ValueKind.BOOL and bits == 8):  # CANopenNode maps BOOLEAN as a byte
         return (
             f"{where} with {bits} bits, but its type {entry.data_type.name if entry.data_type else ''} has {entry.bits}"
         )

@@ -1,0 +1,59 @@
+"""Bad input never ends in a traceback: every command answers with diagnostics and an exit code."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from cantools_od.cli import main
+
+from support import EXAMPLES
+
+GOOD = (EXAMPLES / "io_device.eds").read_bytes()
+BAD_INPUTS = {
+    "empty.eds": b"",
+    "binary.eds": bytes(range(256)) * 4,
+    "truncated.eds": GOOD[: len(GOOD) // 2],
+    "headerless.eds": b"ParameterName=x\nDataType=zz\n",
+    "broken-json.json": b'{"objects": {"x": 1}}',
+    "not-json.json": b"{ this is not json",
+    "mapping-to-nothing.eds": GOOD.replace(b"DefaultValue=0x62000108", b"DefaultValue=0x7FFF0108"),
+    "nodeid-everywhere.eds": GOOD.replace(b"DataType=0x0005", b"DataType=$NODEID"),
+    "cp1252.eds": b"[2000]\nParameterName=\x94\x81\nDataType=0x0009\nDefaultValue=\xff\n",
+}
+COMMANDS = [
+    ["dump"],
+    ["dump", "--format", "json"],
+    ["pdo"],
+    ["pdo", "--format", "json", "--node-id", "3"],
+    ["lint"],
+    ["lint", "--fix"],
+    ["lint", "--format", "sarif"],
+    ["lint", "--network"],
+    ["fmt", "--check"],
+    ["ids"],
+    ["gen", "-t", "c", "-t", "rust", "-t", "python", "-t", "markdown", "-o", "out"],
+    ["convert", "-o", "out.json"],
+    ["convert", "-o", "out.dcf", "--node-id", "4"],
+]
+
+
+@pytest.mark.parametrize("name", sorted(BAD_INPUTS))
+@pytest.mark.parametrize("args", COMMANDS, ids=lambda a: " ".join(a))
+def test_no_traceback(tmp_path: Path, name: str, args: list[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / name).write_bytes(BAD_INPUTS[name])
+    result = CliRunner().invoke(main, [args[0], name, *args[1:]], catch_exceptions=True)
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.output
+    assert result.exit_code in (0, 1, 2), result.output
+    assert "Traceback" not in result.output
+
+
+def test_gen_writes_nothing_when_it_refuses(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "bad.eds").write_bytes(BAD_INPUTS["mapping-to-nothing.eds"])
+    result = CliRunner().invoke(main, ["gen", "bad.eds", "-t", "c", "-o", "out"])
+    assert result.exit_code == 1 and "[GEN001]" in result.output
+    assert not (tmp_path / "out").exists()

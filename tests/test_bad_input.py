@@ -37,6 +37,7 @@ COMMANDS = [
     ["gen", "-t", "c", "-t", "rust", "-t", "python", "-t", "markdown", "-o", "out"],
     ["convert", "-o", "out.json"],
     ["convert", "-o", "out.dcf", "--node-id", "4"],
+    ["import-table", "-o", "imported.eds"],
 ]
 
 

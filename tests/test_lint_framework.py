@@ -120,3 +120,17 @@ def test_nodeid_spelling_fix_touches_only_its_line(tmp_path: Path) -> None:
     assert run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--fix").returncode == 0
     assert target.read_bytes() == source.replace("0x80+$nodeid", "$NODEID+0x80").encode()
     assert json.loads(run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--format", "json").stdout) == []
+
+
+def test_count_fix_rewrites_only_the_count_lines(tmp_path: Path) -> None:
+    source = (
+        "[2000]\r\nParameterName=A\r\nObjectType=0x8\r\nDataType=0x0005\r\nAccessType=ro\r\nCompactSubObj=3\r\n"
+        "[2000Name]\r\nNrOfEntries=5\r\n1=First\r\n[2000ObjectLinks]\r\nObjectLinks=3\r\n1=0x2000\r\n"
+    )
+    target = tmp_path / "counts.eds"
+    target.write_bytes(source.encode())
+    found = json.loads(run_lint(tmp_path, "counts.eds", "--select", "EDS104", "--format", "json").stdout)
+    assert [(f["line"], f["column"], f["fix"]["safe"]) for f in found] == [(8, 1, True), (11, 1, True)]
+    assert run_lint(tmp_path, "counts.eds", "--select", "EDS104", "--fix").returncode == 0
+    expected = source.replace("NrOfEntries=5", "NrOfEntries=1").replace("ObjectLinks=3", "ObjectLinks=1")
+    assert target.read_bytes() == expected.encode()

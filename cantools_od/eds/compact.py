@@ -74,7 +74,8 @@ def apply_compact_sections(device: Device, sections: list[tuple[int, str, ini.In
             continue
         count = collected.fields.get("count")
         if count != len(keys):
-            report.error("EDS104", f"[{section.name}]: NrOfEntries={count} but {len(keys)} entries", section.line, 1)
+            line, column, _ = collected.origin.keys.get("NrOfEntries", (section.line, 1, 1))
+            report.error("EDS104", f"[{section.name}]: NrOfEntries={count} but {len(keys)} entries", line, column)
         by_key = {e.key: e for e in section.entries}
         for key in keys:
             subindex = int(key)
@@ -107,12 +108,9 @@ def _object_links(device: Device, obj: Object, section: ini.IniSection, report: 
             return
         links.append(target)
     if collected.fields.get("count") != len(links):
-        report.error(
-            "EDS104",
-            f"[{section.name}]: ObjectLinks={collected.fields.get('count')} but {len(links)} entries",
-            section.line,
-            1,
-        )
+        line, column, _ = collected.origin.keys.get("ObjectLinks", (section.line, 1, 1))
+        message = f"[{section.name}]: ObjectLinks={collected.fields.get('count')} but {len(links)} entries"
+        report.error("EDS104", message, line, column)
     obj.links = links
 
 

@@ -61,11 +61,14 @@ def preserve(device: Device) -> bytes:
         raise ValueError("the device was not read from EDS/DCF bytes")
     before = {s.name: s for s in sections(read_bytes(original, device.source, dcf=device.is_dcf), as_written=True)}
     after = {s.name: s for s in sections(device, as_written=True)}
+    text, encoding, _ = decode_as(original)
+    parsed = ini.parse(text)
+    if device._recount:
+        _written_counts(parsed, before)
     if _entries(before) == _entries(after):
         return original
-    text, encoding, _ = decode_as(original)
     lines = ini.split_lines(text)
-    out = _apply(lines, _plan(ini.parse(text), lines, before, after))
+    out = _apply(lines, _plan(parsed, lines, before, after))
     try:
         data = out.encode(encoding)
     except UnicodeEncodeError:
@@ -82,6 +85,22 @@ def _in_style_of(old: str, new: str) -> str:
     if _DECIMAL.match(old) and _HEX.match(new):
         return str(int(new, 16))
     return new
+
+
+_COUNT_KEYS = {"NrOfEntries", "ObjectLinks"}
+
+
+def _written_counts(parsed: ini.IniFile, before: dict[str, OutSection]) -> None:
+    """Put the counts of [xxxxName/Value/Denotation/ObjectLinks] as written in place of the derived ones,
+    so that a wrong count differs from the device's and is rewritten."""
+    for section in parsed.sections:
+        old = before.get(canonical_section_name(section.name))
+        if old is None:
+            continue
+        for entry in section.entries:
+            key = next((k for k in _COUNT_KEYS if k.lower() == normalize(entry.key)), None)
+            if key is not None and key in old.entries:
+                old.entries[key] = entry.value
 
 
 def _entries(by_name: dict[str, OutSection]) -> dict[str, dict[str, str]]:

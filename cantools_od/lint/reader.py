@@ -100,7 +100,9 @@ _VALUE_KEYS = {"DefaultValue": "default", "ParameterValue": "parameter_value", "
 
 
 def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:
-    """A fix for a finding the reader made: respelling a `$NODEID` formula (EDS033)."""
+    """A fix for a finding the reader made: a wrong count (EDS104), a `$NODEID` spelling (EDS033)."""
+    if diagnostic.code == "EDS104" and ("NrOfEntries=" in diagnostic.message or "ObjectLinks=" in diagnostic.message):
+        return Fix("write the number of entries", safe=True, apply=_recount)
     if diagnostic.code != "EDS033":
         return None
     for _, _, var in ctx.variables():
@@ -123,3 +125,7 @@ def _setter(var: Variable, field: str, value: NodeIdExpr) -> Callable[[Device], 
         setattr(var, field, value)
 
     return apply
+
+
+def _recount(device: Device) -> None:
+    device._recount = True

@@ -125,6 +125,9 @@ class Device(BaseModel):
 
     # The bytes the device was read from: the preserving writer edits them.
     _original: bytes | None = PrivateAttr(default=None)
+    # Set by a lint fix: the preserving writer then also rewrites counts the model derives
+    # (NrOfEntries of [xxxxName]/[xxxxValue]/[xxxxDenotation], ObjectLinks) where the file has them wrong.
+    _recount: bool = PrivateAttr(default=False)
 
     def resolve(self, value: Value | None, node_id: int | None = None) -> Value | None:
         """A value with `$NODEID` replaced by the given or commissioned node-ID."""

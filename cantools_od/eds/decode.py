@@ -1,8 +1,33 @@
-"""Bytes → text: UTF-8 with or without BOM, else a DOS/Windows code page."""
+"""Bytes → text: UTF-8 with or without BOM, else Windows-1252 (the DOS/Windows code page of real files).
+
+The five bytes Windows-1252 leaves undefined (81h, 8Dh, 8Fh, 90h, 9Dh) stand for the control
+characters of the same number, as in Latin-1, so every byte decodes the same way whatever the rest of
+the file holds, and encodes back to itself.
+"""
 
 from __future__ import annotations
 
+import codecs
+
 _BOM = b"\xef\xbb\xbf"
+CP1252 = "cp1252"
+ERRORS = "cantools-od-cp1252"
+_UNDEFINED = frozenset(b"\x81\x8d\x8f\x90\x9d")
+
+
+def _handle(error: UnicodeError) -> tuple[str | bytes, int]:
+    if isinstance(error, UnicodeDecodeError):
+        chunk = error.object[error.start : error.end]
+        if all(byte in _UNDEFINED for byte in chunk):
+            return "".join(chr(byte) for byte in chunk), error.end
+    elif isinstance(error, UnicodeEncodeError):
+        chunk_text = error.object[error.start : error.end]
+        if all(ord(char) in _UNDEFINED for char in chunk_text):
+            return bytes(ord(char) for char in chunk_text), error.end
+    raise error
+
+
+codecs.register_error(ERRORS, _handle)
 
 
 def decode_as(data: bytes) -> tuple[str, str, str | None]:
@@ -13,13 +38,15 @@ def decode_as(data: bytes) -> tuple[str, str, str | None]:
         return data.decode("utf-8"), "utf-8", None
     except UnicodeDecodeError as error:
         where = f"byte 0x{data[error.start]:02X} at offset {error.start}"
-    try:
-        return data.decode("cp1252"), "cp1252", f"not UTF-8 ({where}); read as Windows-1252"
-    except UnicodeDecodeError:
-        return data.decode("latin-1"), "latin-1", f"not UTF-8 ({where}); read as Latin-1"
+    return data.decode(CP1252, ERRORS), CP1252, f"not UTF-8 ({where}); read as Windows-1252"
 
 
 def decode(data: bytes) -> tuple[str, str | None]:
     """The text, and a note naming the fallback encoding when UTF-8 failed."""
     text, _, note = decode_as(data)
     return text, note
+
+
+def encode(text: str, encoding: str) -> bytes:
+    """Text in the codec it was read with; raises UnicodeEncodeError for characters it cannot hold."""
+    return text.encode(encoding, ERRORS if encoding == CP1252 else "strict")

@@ -44,6 +44,10 @@ class IniFile:
     preamble_comments: list[str]
     preamble_stray: list[tuple[int, str]]
     line_count: int
+    long_lines: list[tuple[int, int]] = field(default_factory=list)  # (line, length) over MAX_LINE
+
+
+MAX_LINE = 255  # CiA 306: characters in a line, without its end
 
 
 _EOL = re.compile(r"\r\n|\r|\n")
@@ -71,11 +75,13 @@ def parse(text: str) -> IniFile:
     preamble_stray: list[tuple[int, str]] = []
     sections: list[IniSection] = []
     pending: list[str] = []
+    long_lines: list[tuple[int, int]] = []
     line = 1  # counted here: lark counts only "\n", files also end lines with a lone "\r"
     for token in tree.children:
         assert isinstance(token, Token)
         lines = _EOL.split(token)
         first, line = line, line + len(lines) - 1
+        long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
         if token.type == "PREAMBLE":
             trailing: list[str] = []
             _split_body(lines, first, 0, [], trailing, preamble_stray)
@@ -99,7 +105,7 @@ def parse(text: str) -> IniFile:
         sections[-1].trailing = pending
     else:
         preamble_comments = pending
-    return IniFile(sections, preamble_comments, preamble_stray, line)
+    return IniFile(sections, preamble_comments, preamble_stray, line, long_lines)
 
 
 def _split_body(

@@ -11,7 +11,7 @@ from collections import Counter
 
 from ..model import Device
 from . import ini
-from .decode import decode_as
+from .decode import decode_as, encode
 from .keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, normalize
 from .reader import read_bytes
 from .writer import OutSection, render, sections
@@ -69,11 +69,11 @@ def preserve(device: Device) -> bytes:
         return original
     lines = ini.split_lines(text)
     out = _apply(lines, _plan(parsed, lines, before, after))
+    bom = b"\xef\xbb\xbf" if original.startswith(b"\xef\xbb\xbf") else b""
     try:
-        data = out.encode(encoding)
+        return bom + encode(out, encoding)
     except UnicodeEncodeError:
-        data = out.encode("utf-8")  # new text the old code page cannot hold
-    return (b"\xef\xbb\xbf" if original.startswith(b"\xef\xbb\xbf") else b"") + data
+        return bom + out.encode("utf-8")  # new text the old code page cannot hold
 
 
 _DECIMAL = re.compile(r"-?(?:0|[1-9][0-9]*)\Z")
@@ -81,8 +81,11 @@ _HEX = re.compile(r"-?0x[0-9A-F]+\Z")
 
 
 def _in_style_of(old: str, new: str) -> str:
-    """A changed number keeps the radix it was written in: `500` becomes `250`, not `0x00FA`."""
-    if _DECIMAL.match(old) and _HEX.match(new):
+    """A changed number keeps the radix it was written in: `500` becomes `250`, not `0x00FA`.
+
+    A bare `0` says nothing about the radix; the canonical form is taken then.
+    """
+    if old != "0" and _DECIMAL.match(old) and _HEX.match(new):
         return str(int(new, 16))
     return new
 

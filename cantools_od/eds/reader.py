@@ -69,6 +69,8 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
 
 
 def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
+    for line, length in parsed.long_lines:
+        report.error("EDS001", f"line has {length} characters; CiA 306 allows {ini.MAX_LINE}", line, ini.MAX_LINE + 1)
     for line, text in parsed.preamble_stray:
         report.error("EDS101", f"text before the first section: {text[:60]!r}", line, 1)
     device = Device.model_construct(

@@ -112,11 +112,13 @@ def rule(code: str, severity: Severity, summary: str, description: str, example:
     return register
 
 
-def declare(code: str, severity: Severity, summary: str, description: str, example: str = "") -> None:
+def declare(
+    code: str, severity: Severity, summary: str, description: str, example: str = "", family: str = "reader"
+) -> None:
     """Document a code that the reader reports, so `rules` lists it and `--select` knows it."""
     if code in RULES:
         raise ValueError(f"rule {code} declared twice")
-    RULES[code] = Rule(code, severity, summary, description.strip(), example.strip(), "reader", None)
+    RULES[code] = Rule(code, severity, summary, description.strip(), example.strip(), family, None)
 
 
 def find(code: str) -> Rule:

@@ -7,21 +7,18 @@ import re
 from collections.abc import Iterable, Iterator
 
 from ..eds import keys
-from ..eds.decode import decode
-from ..model import Device, Location, Section, Severity
+from ..model import Device, Section, Severity
 from .common import OBJECT_FIELDS, explicit_objects, explicit_vars, file_start, invalid, present, where
-from .rules import Context, Finding, Fix, rule
+from .rules import Context, Finding, Fix, declare, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
-MAX_LINE = 255
 MAX_NAME = 241  # 255 - len("ParameterName=")
 RESERVED_DEVICE_INFO = ("ProductVersion", "ProductRevision", "LMT_ManufacturerName", "LMT_ProductName",
                         "ExtendedBootUpMaster", "ExtendedBootUpSlave")  # fmt: skip
 LATER_OBJECT_KEYS = ("SRDOMapping", "InvertedSRAD")
 EXTENSION_KEYS = ("Factor", "Unit", "Description", "StorageLocation")  # python-canopen; see portability
 _OBJECT_KEYS = (*OBJECT_FIELDS, *LATER_OBJECT_KEYS, *EXTENSION_KEYS)
-_EOL = re.compile(r"\r\n|\r|\n")
 _OBJECT_LIKE = re.compile(r"[0-9a-f]{1,4}(?:sub[0-9a-f]+|name|value|denotation|objectlinks)?\Z", re.IGNORECASE)
 _OTHER_KNOWN = re.compile(r"(?:tools|tool[1-9][0-9]*|dynamicchannels)\Z", re.IGNORECASE)
 _MODULE = re.compile(
@@ -45,7 +42,8 @@ def _suggest(key: str, known: Iterable[str]) -> str:
 # ---- lines, sections, keys -------------------------------------------------------------------------------------
 
 
-@rule(
+# The reader measures the lines (only it sees the text); the rule is documented with its family.
+declare(
     "EDS001",
     E,
     "Line longer than 255 characters",
@@ -53,16 +51,8 @@ def _suggest(key: str, known: Iterable[str]) -> str:
 CiA 306 limits every line to 255 characters; the length limits of the string keys (ParameterName
 241, Description 243, ...) follow from it. Tools with fixed line buffers cut longer lines.""",
     "[2000]\nParameterName=<a name of 250 characters>",
+    family="syntax",
 )
-def long_lines(ctx: Context) -> Iterator[Finding]:
-    data = ctx.device._original
-    if data is None:
-        return
-    text, _ = decode(data)
-    for number, line in enumerate(_EOL.split(text), 1):
-        if len(line) > MAX_LINE:
-            location = Location(file=ctx.device.source, line=number, column=MAX_LINE + 1)
-            yield ctx.report("EDS001", f"line has {len(line)} characters; CiA 306 allows {MAX_LINE}", location)
 
 
 def _keyed_sections(device: Device) -> Iterator[tuple[str, Section, tuple[str, ...]]]:

@@ -153,8 +153,8 @@ def test_sub0_fix() -> None:
     line = line_of(text, "DefaultValue=1")
     assert findings(text, "EDS026") == [(line, 14)]
     after = fix(text, "EDS026")
-    assert diff(text, after) == ["- DefaultValue=1", "+ DefaultValue=0x03"]  # the writer's UNSIGNED8 form
-    assert after.splitlines()[line - 1] == "DefaultValue=0x03"
+    assert diff(text, after) == ["- DefaultValue=1", "+ DefaultValue=3"]  # decimal, as the line was written
+    assert after.splitlines()[line - 1] == "DefaultValue=3"
     assert findings(after, "EDS026") == []
 
 

@@ -134,3 +134,13 @@ def test_preserve_keeps_the_radix_of_an_edited_number() -> None:
     device = loads(original)
     device.objects[0x1017].default = 250
     assert dumps(device) == original.replace(b"=500", b"=250")
+
+
+def test_edited_compact_sub_object_gets_its_own_section() -> None:
+    text = b"[1600]\nParameterName=M\nObjectType=0x9\nDataType=0x0007\nAccessType=rw\nCompactSubObj=2\nDefaultValue=0\n"
+    device = loads(text)
+    device.objects[0x1600].subs[1].default = 0x60400010
+    for style in ("preserve", "canonical"):
+        again = loads(dumps(device, style=style))  # type: ignore[arg-type]
+        assert again.objects[0x1600].subs[1].default == 0x60400010, style
+        assert again.objects[0x1600].subs[2].default == 0 and again.objects[0x1600].subs[2].implicit

@@ -17,7 +17,8 @@ def implicit_sub_name(parent: Object, subindex: int) -> str:
     return NR_OF_OBJECTS if subindex == 0 else f"{parent.name}{subindex}"
 
 
-def _implicit_sub(parent: Object, subindex: int) -> SubObject:
+def implicit_sub(parent: Object, subindex: int) -> SubObject:
+    """The sub-object CompactSubObj implies at `subindex` of `parent`."""
     if subindex == 0:
         return SubObject(
             name=NR_OF_OBJECTS, data_type=0x0005, access=AccessType.RO, pdo_mapping=False,
@@ -42,7 +43,7 @@ def expand_compact_sub_objects(device: Device) -> None:
         subs = dict(obj.subs)
         for subindex in range(0, min(count, 0xFE) + 1):
             if subindex not in subs:
-                subs[subindex] = _implicit_sub(obj, subindex)
+                subs[subindex] = implicit_sub(obj, subindex)
         obj.subs = dict(sorted(subs.items()))
 
 
@@ -84,7 +85,7 @@ def apply_compact_sections(device: Device, sections: list[tuple[int, str, ini.In
                 report.error(
                     "EDS104", f"[{section.name}] {key}: beyond CompactSubObj={obj.compact_sub_obj}", by_key[key].line, 1
                 )
-                sub = obj.subs[subindex] = _implicit_sub(obj, subindex)
+                sub = obj.subs[subindex] = implicit_sub(obj, subindex)
                 obj.subs = dict(sorted(obj.subs.items()))
             if kind == "name":
                 sub.name = collected.extra[key]
@@ -179,3 +180,12 @@ def _mapping_object(index: int, direction: str) -> Object:
     return Object(
         index=index, name=f"{kind} mapping parameter", object_type=ObjectKind.RECORD, subs=subs, implicit=True
     )
+
+
+_COMPACT_SECTIONS = {"name", "parameter_value", "denotation", "comments"}  # what [xxxxName/Value/...] carry
+
+
+def compact_form_holds(parent: Object, subindex: int, sub: SubObject) -> bool:
+    """Whether CompactSubObj and its [xxxxName/Value/Denotation] sections still say all of `sub`."""
+    implied = implicit_sub(parent, subindex).model_dump(exclude=_COMPACT_SECTIONS | {"origin"})
+    return sub.model_dump(exclude=_COMPACT_SECTIONS | {"origin"}) == implied

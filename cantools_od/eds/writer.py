@@ -8,7 +8,7 @@ from typing import Any
 from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
 from ..model.device import Commissioning, DeviceInfo, FileInfo
 from . import ini
-from .compact import implicit_sub_name
+from .compact import compact_form_holds, implicit_sub_name
 from .dialect import detect_dialect
 from .format import format_key, format_value
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
@@ -124,9 +124,10 @@ def _object_sections(device: Device, obj: Object, style: _Style) -> list[OutSect
     compact: dict[str, dict[str, str]] = {"Name": {}, "Value": {}, "Denotation": {}}
     dtype = device.entry_type(obj, obj)
     for subindex, sub in obj.subs.items():
-        if sub.implicit and obj.compact_sub_obj:
+        if sub.implicit and obj.compact_sub_obj and compact_form_holds(obj, subindex, sub):
             _compact_entries(device, obj, subindex, sub, compact, dtype, style)
             continue
+        # An edited compact sub-object no longer follows its parent: it gets a section of its own.
         out.append(_with_extra(f"{name}sub{subindex:X}", _variable_entries(device, sub, obj, style), sub))
     for suffix, entries in compact.items():
         if entries:

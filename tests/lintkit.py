@@ -7,6 +7,9 @@ complete, valid EDS for the tests that need a whole file. Locations are (line, c
 from __future__ import annotations
 
 import difflib
+from collections.abc import Callable
+
+import pytest
 
 from cantools_od import dumps, loads
 from cantools_od.lint import Finding, LintOptions, lint
@@ -217,3 +220,33 @@ def diff(before: str, after: str) -> list[str]:
         for line in difflib.ndiff(before.splitlines(), after.splitlines())
         if line[:1] in "-+" and not line.startswith(("---", "+++"))
     ]
+
+
+Found = list[tuple[str, str, str, list[tuple[int, int]]]]
+Clean = list[tuple[str, str, str]]
+
+
+def table_tests(family: str, found: Found, clean: Clean) -> tuple[Callable[..., None], ...]:
+    """The four table-driven tests of a rule family, for its test module to bind at module level:
+    each finding at its exact place, none on the clean variants, none on a valid file, and every
+    rule documented in the family."""
+    codes = sorted({code for code, *_ in found})
+
+    @pytest.mark.parametrize(("code", "text", "source", "expected"), found)
+    def test_finding_location(code: str, text: str, source: str, expected: list[tuple[int, int]]) -> None:
+        assert findings(text, code, source) == expected
+
+    @pytest.mark.parametrize(("code", "text", "source"), clean)
+    def test_no_finding(code: str, text: str, source: str) -> None:
+        assert findings(text, code, source) == []
+
+    @pytest.mark.parametrize("code", codes)
+    def test_rule_on_a_valid_file(code: str) -> None:
+        assert findings(BASE, code) == []
+
+    @pytest.mark.parametrize("code", codes)
+    def test_rule_documented(code: str) -> None:
+        rule = RULES[code]
+        assert rule.family == family and rule.summary and rule.description and rule.example
+
+    return test_finding_location, test_no_finding, test_rule_on_a_valid_file, test_rule_documented

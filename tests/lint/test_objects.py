@@ -2,10 +2,7 @@
 
 from __future__ import annotations
 
-import pytest
-from lintkit import BASE, diff, findings, fix, line_of, messages, replace, run
-
-from cantools_od.lint.rules import RULES
+from lintkit import BASE, diff, findings, fix, line_of, messages, replace, run, table_tests
 
 VAR = "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\n"
 RECORD = "[2000]\nParameterName=Record\nObjectType=0x9\nSubNumber=2\n"
@@ -106,28 +103,9 @@ CLEAN = [
     ),
     ("EDS081", "[0040]\nParameterName=T\nObjectType=0x5\nDataType=0x0007\nAccessType=ro\n", "t.eds"),
 ]
-CODES = sorted({code for code, *_ in FOUND})
-
-
-@pytest.mark.parametrize(("code", "text", "source", "expected"), FOUND)
-def test_finding_location(code: str, text: str, source: str, expected: list[tuple[int, int]]) -> None:
-    assert findings(text, code, source) == expected
-
-
-@pytest.mark.parametrize(("code", "text", "source"), CLEAN)
-def test_no_finding(code: str, text: str, source: str) -> None:
-    assert findings(text, code, source) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_on_a_valid_file(code: str) -> None:
-    assert findings(BASE, code) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_documented(code: str) -> None:
-    rule = RULES[code]
-    assert rule.family == "objects" and rule.summary and rule.description and rule.example
+test_finding_location, test_no_finding, test_rule_on_a_valid_file, test_rule_documented = table_tests(
+    "objects", FOUND, CLEAN
+)
 
 
 def test_messages() -> None:

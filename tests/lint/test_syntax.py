@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from lintkit import BASE, FAMILIES, diff, findings, fix, line_of, messages, replace, run
+from lintkit import BASE, FAMILIES, diff, findings, fix, line_of, messages, replace, run, table_tests
 
 from cantools_od import load
 from cantools_od.lint import lint
@@ -46,28 +46,9 @@ CLEAN = [
     ("EDS007", "[DeviceInfo]\nVendorName=x\n", "t.eds"),
     ("EDS009", "[FileInfo]\nFileName=t\n[DeviceInfo]\nVendorName=x\n[DummyUsage]\n", "t.eds"),
 ]
-CODES = sorted({code for code, *_ in FOUND})
-
-
-@pytest.mark.parametrize(("code", "text", "source", "expected"), FOUND)
-def test_finding_location(code: str, text: str, source: str, expected: list[tuple[int, int]]) -> None:
-    assert findings(text, code, source) == expected
-
-
-@pytest.mark.parametrize(("code", "text", "source"), CLEAN)
-def test_no_finding(code: str, text: str, source: str) -> None:
-    assert findings(text, code, source) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_on_a_valid_file(code: str) -> None:
-    assert findings(BASE, code) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_documented(code: str) -> None:
-    rule = RULES[code]
-    assert rule.family == "syntax" and rule.summary and rule.description and rule.example
+test_finding_location, test_no_finding, test_rule_on_a_valid_file, test_rule_documented = table_tests(
+    "syntax", FOUND, CLEAN
+)
 
 
 def test_messages() -> None:

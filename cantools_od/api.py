@@ -29,6 +29,7 @@ def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: 
     raw = data.encode("utf-8") if isinstance(data, str) else data
     if fmt == "json" or (fmt is None and _is_json(raw)):
         device = Device.model_validate_json(raw)  # ValueError when the JSON is not a model
+        device.source = source or device.source
         if node_id is not None:
             device.node_id = node_id
         return device

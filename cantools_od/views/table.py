@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
-from ..model import Device, Object, RawValue, TimeValue, Value, Variable
+from pathlib import Path
+
+from ..model import Device, Object, Origin, RawValue, TimeValue, Value, Variable
 from ..model.values import NodeIdExpr
 
 
@@ -34,8 +36,17 @@ def _row(device: Device, index: str, sub: str, var: Variable, owner: Object, kin
     if var.low_limit is not None or var.high_limit is not None:
         limits = f"{display(var.low_limit)}..{display(var.high_limit)}"
     pdo = "yes" if var.pdo_mapping else ""
-    origin = f"{var.origin.line}" if var.origin else ""
+    origin = _where(device, var.origin or owner.origin)
     return [index, sub, var.name, type_name, access, pdo, value, limits, origin]
+
+
+def _where(device: Device, origin: Origin | None) -> str:
+    """The line a value comes from; with its file when that is not the one shown (an imported manual)."""
+    if origin is None or not origin.line:
+        return ""
+    if origin.file and Path(origin.file).name != Path(device.source).name:
+        return f"{Path(origin.file).name}:{origin.line}"
+    return str(origin.line)
 
 
 def render_table(device: Device) -> str:
@@ -48,7 +59,7 @@ def render_table(device: Device) -> str:
         f"  dialect {device.dialect.value}",
         "",
     ]
-    rows = [["Index", "Sub", "Name", "Type", "Access", "PDO", "Value", "Limits", "Line"]]
+    rows = [["Index", "Sub", "Name", "Type", "Access", "PDO", "Value", "Limits", "Source"]]
     for obj in device.objects.values():
         kind = obj.kind.name if obj.has_subs or obj.kind.name in ("DEFTYPE", "NULL") else ""
         rows.append(_row(device, f"{obj.index:04X}", "", obj, obj, kind))

@@ -36,7 +36,7 @@ def test_json_output_keeps_manual_lines_for_dump(tmp_path: Path) -> None:
     dump = run("dump", tmp_path / "out.json")
     assert dump.returncode == 0
     row = next(line for line in dump.stdout.splitlines() if line.startswith("1000"))
-    assert row.split()[-1] == "2"  # the CSV line of 1000h, not a line of the EDS
+    assert row.split()[-1] == "od.csv:2"  # the CSV file and line of 1000h, not a line of the EDS
 
 
 def test_unreadable_source_exits_2(tmp_path: Path) -> None:

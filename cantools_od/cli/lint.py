@@ -64,9 +64,9 @@ def command(
         devices.append(device)
         findings.extend(result)
     if network:
-        from ..lint.network import lint_network
+        from ..lint.runner import lint_network
 
-        findings.extend(f for f in lint_network(devices, options) if selection.enabled(f.code, f.location.file))
+        findings.extend(lint_network(devices, options, selection))
     click.echo(_render(fmt, findings, len(files)), nl=False)
     sys.exit(EXIT_FINDINGS if has_errors(findings) else EXIT_OK)
 

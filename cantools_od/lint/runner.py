@@ -50,3 +50,20 @@ def _sort_key(finding: Finding) -> tuple[str, int, int, str, str]:
 
 def has_errors(findings: list[Finding]) -> bool:
     return any(f.severity is Severity.ERROR for f in findings)
+
+
+def lint_network(devices: list[Device], options: LintOptions, selection: Selection | None = None) -> list[Finding]:
+    """Findings across the nodes of one network, filtered like a single file's."""
+    from .network import lint_network as network_findings
+
+    selection = selection or Selection()
+    suppressions = {device.source: Suppressions(device) for device in devices}
+    kept = []
+    for finding in network_findings(devices, options):
+        where = suppressions.get(finding.location.file)
+        if not selection.enabled(finding.code, finding.location.file):
+            continue
+        if where is not None and where.silenced(finding.code, finding.location.line):
+            continue
+        kept.append(finding)
+    return sorted(kept, key=_sort_key)

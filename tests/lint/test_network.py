@@ -132,3 +132,14 @@ def test_cli_network_exit_code_and_location(tmp_path: Path) -> None:
     line = where(second, "1800sub1", "DefaultValue")
     expected = f"b.dcf:{line}:{VALUE_COLUMN}: error: TPDO1 sends CAN-ID 181h, which a.dcf (TPDO1) sends too [COB011]"
     assert expected in together.stdout.splitlines()
+
+
+def test_network_findings_honour_suppression_comments() -> None:
+    from cantools_od.lint.runner import lint_network as filtered
+
+    second = dcf(2, *receiver("0x20000010", "0x20010020", cob="0x00000190"))
+    quiet = second.replace("[1400sub1]", "; cantools-od: ignore COB011\n[1400sub1]")
+    devices = [load(dcf(1, *SENDER), "a.dcf"), load(second, "b.dcf")]
+    assert [f.code for f in filtered(devices, LintOptions())] == ["COB011"]
+    devices = [load(dcf(1, *SENDER), "a.dcf"), load(quiet, "b.dcf")]
+    assert filtered(devices, LintOptions()) == []

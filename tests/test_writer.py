@@ -144,3 +144,17 @@ def test_edited_compact_sub_object_gets_its_own_section() -> None:
         again = loads(dumps(device, style=style))  # type: ignore[arg-type]
         assert again.objects[0x1600].subs[1].default == 0x60400010, style
         assert again.objects[0x1600].subs[2].default == 0 and again.objects[0x1600].subs[2].implicit
+
+
+def test_edited_compact_pdo_is_written_with_its_mapping() -> None:
+    text = (
+        b"[DeviceInfo]\nCompactPDO=0x3\nNrOfRXPDO=2\nNrOfTXPDO=0\n"
+        b"[1401]\nParameterName=RPDO2\nObjectType=0x9\nSubNumber=0\n"
+    )
+    device = loads(text)
+    assert dumps(device) == text and dumps(device, style="canonical").count(b"[14") == 1  # implied, not written
+    device.objects[0x1400].subs[1].default = 0x80000000
+    for style in ("preserve", "canonical"):
+        again = loads(dumps(device, style=style))  # type: ignore[arg-type]
+        assert again.objects[0x1400].subs[1].default == 0x80000000, style
+        assert 0x1600 in again.objects and not again.objects[0x1600].implicit, style

@@ -189,3 +189,15 @@ def compact_form_holds(parent: Object, subindex: int, sub: SubObject) -> bool:
     """Whether CompactSubObj and its [xxxxName/Value/Denotation] sections still say all of `sub`."""
     implied = implicit_sub(parent, subindex).model_dump(exclude=_COMPACT_SECTIONS | {"origin"})
     return sub.model_dump(exclude=_COMPACT_SECTIONS | {"origin"}) == implied
+
+
+def implied_pdo_objects(device: Device) -> dict[int, Object]:
+    """The objects CompactPDO implies for this device, as the reader creates them."""
+    explicit = {index: obj for index, obj in device.objects.items() if not obj.implicit}
+    probe = Device.model_construct(device_info=device.device_info, objects=dict(explicit))
+    expand_compact_pdo(probe)
+    return {index: obj for index, obj in probe.objects.items() if index not in explicit}
+
+
+def same_object(a: Object, b: Object) -> bool:
+    return a.model_dump(exclude={"origin"}) == b.model_dump(exclude={"origin"})

@@ -8,7 +8,7 @@ from typing import Any
 from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
 from ..model.device import Commissioning, DeviceInfo, FileInfo
 from . import ini
-from .compact import compact_form_holds, implicit_sub_name
+from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
 from .dialect import detect_dialect
 from .format import format_key, format_value
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
@@ -67,12 +67,32 @@ def sections(device: Device, dcf: bool = False, as_written: bool = False) -> lis
             )
             entries.update({str(pos): f"0x{index:04X}" for pos, index in sorted(attr.entries.items())})
             out.append(_with_extra(name, entries, attr))
-    for obj in device.objects.values():
-        if not obj.implicit:
+    written = _explicit_indices(device)
+    for index, obj in device.objects.items():
+        if index in written:
             out.extend(_object_sections(device, obj, style))
     for raw in [*device.module_sections, *device.other_sections]:
         out.append(_with_extra(raw.name, dict(raw.entries), raw))
     return out
+
+
+def _explicit_indices(device: Device) -> set[int]:
+    """Objects to write: all but CompactPDO ones the reader implies again unchanged.
+
+    A changed implied PDO is written whole, communication and mapping record together, since
+    the reader implies the two only as a pair.
+    """
+    written = {index for index, obj in device.objects.items() if not obj.implicit}
+    if len(written) == len(device.objects):
+        return written
+    implied = implied_pdo_objects(device)
+    changed = {
+        index
+        for index, obj in device.objects.items()
+        if obj.implicit and (index not in implied or not same_object(obj, implied[index]))
+    }
+    partners = {index + 0x200 if index & 0x200 == 0 else index - 0x200 for index in changed}
+    return written | changed | {index for index in partners if index in device.objects}
 
 
 def _with_extra(name: str, entries: dict[str, str], section: Section) -> OutSection:

@@ -26,7 +26,6 @@ generated names collide whatever the identifiers are.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 from ..model import AccessType, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
@@ -265,13 +264,13 @@ def context(view: DeviceView) -> Context:
         builder.add(obj)
     pdos, helpers = c_pdos(view, builder.prefix, builder.macro)
     info = view.device.device_info
-    node_id = view.node_id if view.node_id is not None else view.device.node_id
+    node_id = view.node_id
     return Context(
         name=view.name,
         prefix=builder.prefix,
         macro=builder.macro,
         guard=f"{builder.macro}H",
-        source=Path(view.device.source).name if view.device.source else "",
+        source=view.source_name,
         vendor=info.vendor_name or "",
         product=info.product_name or "",
         node_id=node_id,

@@ -44,11 +44,7 @@ def _link_if(view: DeviceView, index: int) -> str:
 
 
 def _source(view: DeviceView) -> str:
-    return Path(view.device.source).name if view.device.source else f"{view.name}.eds"
-
-
-def _node_id(view: DeviceView) -> int | None:
-    return view.node_id if view.node_id is not None else view.device.node_id
+    return view.source_name or f"{view.name}.eds"
 
 
 def _document(view: DeviceView) -> dict[str, object]:
@@ -68,7 +64,7 @@ def _document(view: DeviceView) -> dict[str, object]:
 def _summary(view: DeviceView) -> list[list[str]]:
     device = view.device
     info, file_info = device.device_info, device.file_info
-    nid = _node_id(view)
+    nid = view.node_id
     rates = [f"{rate}" for rate, on in sorted(info.baud_rates.items()) if on]
     rows = [
         ("File", markdown_cell(_source(view))),
@@ -216,7 +212,7 @@ def _value(view: DeviceView, entry: EntryView) -> str:
     if isinstance(value, TimeValue):
         return f"{value.days} days {value.ms} ms"
     if isinstance(value, NodeIdExpr):
-        nid = _node_id(view)
+        nid = view.node_id
         text = markdown_text(value.canonical())
         return text if nid is None else f"0x{value.resolve(nid):X} ({text})"
     return _number(value, entry.data_type)

@@ -14,7 +14,6 @@ and to talk to a node. It holds:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 from ..interop import OdVariable, od_objects
 from ..model import AccessType, Device, NodeIdExpr, ValueKind, standard_type
@@ -82,12 +81,7 @@ def render(view: DeviceView) -> dict[str, str]:
 
 
 def source_name(view: DeviceView) -> str:
-    """The file the view comes from, without folders (generated text does not depend on where it was)."""
-    return Path(view.device.source).name if view.device.source else f"{view.name}.eds"
-
-
-def node_id(view: DeviceView) -> int | None:
-    return view.node_id if view.node_id is not None else view.device.node_id
+    return view.source_name or f"{view.name}.eds"
 
 
 def _module(view: DeviceView) -> dict[str, object]:
@@ -111,7 +105,7 @@ def _module(view: DeviceView) -> dict[str, object]:
         ),
         "source": py_str(source_name(view)),
         "source_text": doc_text(source_name(view)),
-        "node_id": repr(node_id(view)),
+        "node_id": repr(view.node_id),
         "indices": [py_constant(f"INDEX_{obj.identifier.upper()}", py_hex(obj.index)) for obj in view.objects],
         "subindices": [
             py_constant(f"SUBINDEX_{entry.flat.upper()}", py_hex(entry.subindex, 2))

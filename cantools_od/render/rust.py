@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
-from pathlib import Path
 
 from ..model import STANDARD_TYPES, NodeIdExpr, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
@@ -232,7 +231,7 @@ def module(view: DeviceView) -> RustModule:
     """Everything the templates lay out, in index order."""
     if view.problems:
         raise ValueError(f"cannot generate Rust: {view.problems[0].message}")
-    node_id = view.node_id if view.node_id is not None else view.device.node_id
+    node_id = view.node_id
     node_id = node_id if node_id is not None and 0 <= node_id <= 0xFF else None  # a DCF's NodeID may be anything
     rust_pdos = pdos(view, node_id)
     types = TypeNames(pdo.name for pdo in rust_pdos)
@@ -245,7 +244,7 @@ def module(view: DeviceView) -> RustModule:
 def render(view: DeviceView) -> dict[str, str]:
     """`<name>.rs` for the view."""
     context = module(view)
-    source = Path(view.device.source).name if view.device.source else ""
+    source = view.source_name
     template = environment().get_template("rust/module.rs.j2")
     text = template.render(
         m=context,

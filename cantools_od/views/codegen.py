@@ -8,6 +8,7 @@ each target's renderer spells them in its own language.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from ..identifiers import Identifiers, assign
 from ..model import (
@@ -142,9 +143,14 @@ class DeviceView:
     identifiers: Identifiers
     objects: tuple[ObjectView, ...]
     pdos: tuple[PdoView, ...]
-    node_id: int | None
+    node_id: int | None  # the one given, else the DCF's NodeID
     problems: tuple[Diagnostic, ...] = field(default=())
     max_pdo_bits: int = 64  # the frame limit PDOs were checked against (512 with CAN FD)
+
+    @property
+    def source_name(self) -> str:
+        """The file the device was read from, without folders: generated text does not depend on where it was."""
+        return Path(self.device.source).name if self.device.source else ""
 
     def entry(self, index: int, subindex: int) -> EntryView | None:
         for obj in self.objects:
@@ -213,7 +219,8 @@ def build_view(
                 _diagnostic(device, pdo, f"{pdo.name}: its {pdo.bit_length} bits exceed the {max_pdo_bits}-bit frame")
             )
         pdos.append(PdoView(pdo, tuple(view_entries)))
-    return DeviceView(name, device, ids, tuple(objects), tuple(pdos), node_id, tuple(problems), max_pdo_bits)
+    resolved = node_id if node_id is not None else device.node_id  # given, else the DCF's own
+    return DeviceView(name, device, ids, tuple(objects), tuple(pdos), resolved, tuple(problems), max_pdo_bits)
 
 
 def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryView | None, dummy: bool) -> str:

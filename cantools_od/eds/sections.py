@@ -29,7 +29,9 @@ class Collected:
 
 
 def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> Collected:
-    origin = assemble(Origin, {"file": report.file, "line": section.line, "column": section.column, "keys": {}}, {})
+    origin = assemble(
+        Origin, {"file": report.file, "line": section.line, "column": section.column, "keys": {}, "spelled": {}}, {}
+    )
     collected = Collected(origin)
     if section.comments:
         collected.comments[""] = section.comments
@@ -51,6 +53,10 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
                 collected.deferred.pop(spec[1], None)
         keys[name] = (entry.line, entry.key_col, entry.value_col)
         spelled[name] = entry.key
+        if spec is not None and entry.key != name:
+            origin.spelled[name] = entry.key
+        elif name in origin.spelled:
+            del origin.spelled[name]  # a repeated key, spelled right the last time
         if entry.comments:
             collected.comments[name] = list(entry.comments)
         if spec is None:

@@ -396,3 +396,32 @@ def comment_characters(ctx: Context) -> Iterator[Finding]:
         first = ", ".join(item[0] for item in found[:3]) + (", ..." if len(found) > 3 else "")
         message = f"{_count(found, 'text value', 'text values')} with '#' or ';' ({first}); lely cuts them there"
         yield ctx.report("DIA017", message, ctx.value_at(found[0][1], found[0][2]))
+
+
+@rule(
+    "DIA018",
+    W,
+    "Key spelled otherwise than CiA 306",
+    """
+CiA 306 key names are case-insensitive, but python-canopen looks keys up case-sensitively: a key
+written `NrOfRxPDO` or `Baudrate_500` is not found there, and the tool silently takes a default
+(no PDOs, no baud rate). Write keys as CiA 306 spells them.""",
+    "[DeviceInfo]\nNrOfRxPDO=4",
+)
+def key_spelling(ctx: Context) -> Iterator[Finding]:
+    for section in _sections_with_origin(ctx.device):
+        assert section.origin is not None
+        for canonical, written in section.origin.spelled.items():
+            yield ctx.report(
+                "DIA018",
+                f"{written}: CiA 306 spells it {canonical}; python-canopen reads keys case-sensitively",
+                ctx.at(section, canonical),
+            )
+
+
+def _sections_with_origin(device: Device) -> Iterator[Section]:
+    parts: list[Section | None] = [device.file_info, device.device_info, device.commissioning]
+    for obj in device.objects.values():
+        parts.append(obj)
+        parts.extend(obj.subs.values())
+    yield from (part for part in parts if part is not None and part.origin is not None and part.origin.spelled)

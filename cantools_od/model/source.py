@@ -38,6 +38,8 @@ class Origin(BaseModel):
     line: int = 0
     column: int = 1
     keys: dict[str, tuple[int, int, int]] = {}
+    spelled: dict[str, str] = {}
+    """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written."""
 
     def header(self) -> Location:
         return Location(file=self.file, line=self.line, column=self.column)

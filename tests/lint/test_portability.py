@@ -114,3 +114,19 @@ def test_compact_record_names() -> None:
     record = RECORD.replace("SubNumber=3", "DataType=0x0007\nAccessType=rw\nCompactSubObj=2")
     text = record + "[2000Name]\nNrOfEntries=2\n1=Same\n2=Same\n"
     assert findings(text, "DIA009") == [(1, 1)]
+
+
+def test_key_spelling_that_python_canopen_misses() -> None:
+    text = "[DeviceInfo]\nVendorName=x\nNrOfRxPDO=4\nBaudrate_500=1\n[1017]\nParameterName=Heartbeat\nDatatype=0x0006\n"
+    assert findings(text, "DIA018") == [(3, 1), (4, 1), (7, 1)]
+    assert (
+        messages(text, "DIA018")[0]
+        == "NrOfRxPDO: CiA 306 spells it NrOfRXPDO; python-canopen reads keys case-sensitively"
+    )
+    assert (
+        findings(
+            text.replace("NrOfRxPDO", "NrOfRXPDO").replace("Baudrate_", "BaudRate_").replace("Datatype", "DataType"),
+            "DIA018",
+        )
+        == []
+    )

@@ -10,7 +10,20 @@ from collections import Counter
 from collections.abc import Iterator
 
 from ..eds import keys
-from ..model import Device, Dialect, NodeIdExpr, Object, ObjectKind, Section, Severity, ValueKind, Variable
+from ..model import (
+    Commissioning,
+    Device,
+    DeviceInfo,
+    Dialect,
+    FileInfo,
+    NodeIdExpr,
+    Object,
+    ObjectKind,
+    Section,
+    Severity,
+    ValueKind,
+    Variable,
+)
 from .rules import Context, Finding, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO
 
@@ -409,19 +422,12 @@ written `NrOfRxPDO` or `Baudrate_500` is not found there, and the tool silently 
     "[DeviceInfo]\nNrOfRxPDO=4",
 )
 def key_spelling(ctx: Context) -> Iterator[Finding]:
-    for section in _sections_with_origin(ctx.device):
-        assert section.origin is not None
+    for section in ctx.device.sections():
+        if section.origin is None or not isinstance(section, (FileInfo, DeviceInfo, Commissioning, Variable)):
+            continue
         for canonical, written in section.origin.spelled.items():
             yield ctx.report(
                 "DIA018",
                 f"{written}: CiA 306 spells it {canonical}; python-canopen reads keys case-sensitively",
                 ctx.at(section, canonical),
             )
-
-
-def _sections_with_origin(device: Device) -> Iterator[Section]:
-    parts: list[Section | None] = [device.file_info, device.device_info, device.commissioning]
-    for obj in device.objects.values():
-        parts.append(obj)
-        parts.extend(obj.subs.values())
-    yield from (part for part in parts if part is not None and part.origin is not None and part.origin.spelled)

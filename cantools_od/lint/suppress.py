@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from ..model import Device, Section
+from ..model import Device
 
 _DIRECTIVE = re.compile(r"[;#]\s*cantools-od\s*:\s*ignore\s+([A-Za-z0-9_, ]+)", re.IGNORECASE)
 
@@ -19,32 +19,12 @@ def _codes(comments: list[str]) -> set[str]:
     return found
 
 
-def _sections(device: Device) -> list[Section]:
-    parts: list[Section] = [device.file_info, device.device_info]
-    for optional in (
-        device.dummy_usage,
-        device.comments,
-        device.commissioning,
-        device.mandatory_objects,
-        device.optional_objects,
-        device.manufacturer_objects,
-    ):
-        if optional is not None:
-            parts.append(optional)
-    for obj in device.objects.values():
-        parts.append(obj)
-        parts.extend(obj.subs.values())
-    parts.extend(device.module_sections)
-    parts.extend(device.other_sections)
-    return parts
-
-
 class Suppressions:
     """Line number → codes silenced there."""
 
     def __init__(self, device: Device) -> None:
         self.by_line: dict[int, set[str]] = {}
-        for section in _sections(device):
+        for section in device.sections():
             origin = section.origin
             if origin is None or not section.comments:
                 continue

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from enum import StrEnum
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr
@@ -135,6 +136,26 @@ class Device(BaseModel):
         if isinstance(value, NodeIdExpr) and nid is not None:
             return value.resolve(nid)
         return value
+
+    def sections(self) -> Iterator[Section]:
+        """Every part of the model that a file section describes, in a fixed order."""
+        yield self.file_info
+        yield self.device_info
+        for optional in (
+            self.dummy_usage,
+            self.comments,
+            self.commissioning,
+            self.mandatory_objects,
+            self.optional_objects,
+            self.manufacturer_objects,
+        ):
+            if optional is not None:
+                yield optional
+        for obj in self.objects.values():
+            yield obj
+            yield from obj.subs.values()
+        yield from self.module_sections
+        yield from self.other_sections
 
     def entry_type(self, var: Variable, owner: Object) -> DataType | None:
         """The type `var`'s values are written in: a CiA 301 type, or one a DEFTYPE object aliases.

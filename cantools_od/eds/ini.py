@@ -43,7 +43,6 @@ class IniFile:
     sections: list[IniSection]
     preamble_comments: list[str]
     preamble_stray: list[tuple[int, str]]
-    line_count: int
     long_lines: list[tuple[int, int]] = field(default_factory=list)  # (line, length) over MAX_LINE
 
 
@@ -105,7 +104,7 @@ def parse(text: str) -> IniFile:
         sections[-1].trailing = pending
     else:
         preamble_comments = pending
-    return IniFile(sections, preamble_comments, preamble_stray, line, long_lines)
+    return IniFile(sections, preamble_comments, preamble_stray, long_lines)
 
 
 def _split_body(

@@ -62,11 +62,13 @@ def preserve(device: Device) -> bytes:
     before = {s.name: s for s in sections(read_bytes(original, device.source, dcf=device.is_dcf), as_written=True)}
     after = {s.name: s for s in sections(device, as_written=True)}
     text, encoding, _ = decode_as(original)
-    parsed = ini.parse(text)
+    parsed: ini.IniFile | None = None
     if device._recount:
+        parsed = ini.parse(text)
         _written_counts(parsed, before)
     if _entries(before) == _entries(after):
-        return original
+        return original  # the common case: no second parse of the text
+    parsed = parsed or ini.parse(text)
     lines = ini.split_lines(text)
     out = _apply(lines, _plan(parsed, lines, before, after))
     bom = b"\xef\xbb\xbf" if original.startswith(b"\xef\xbb\xbf") else b""

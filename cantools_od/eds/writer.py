@@ -197,9 +197,31 @@ def render(out: list[OutSection], trailing: list[str], eol: str = "\n") -> str:
     return eol.join(lines) + eol if lines else ""
 
 
+def _as_read(out: list[OutSection]) -> ini.IniFile:
+    """The sections as the reader would see them in the rendered text, without parsing that text."""
+    return ini.IniFile(
+        sections=[
+            ini.IniSection(
+                name=section.name,
+                line=0,
+                column=1,
+                entries=[
+                    ini.Entry(key, value, 0, 0, 0, tuple(section.comments.get(key, ())))
+                    for key, value in section.entries.items()
+                ],
+                comments=list(section.comments.get("", [])),
+            )
+            for section in out
+        ],
+        preamble_comments=[],
+        preamble_stray=[],
+    )
+
+
 def canonical_text(device: Device, dcf: bool = False) -> str:
-    text = render(sections(device, dcf), device.trailing_comments)
-    if detect_dialect(ini.parse(text)) is not device.dialect:
+    out = sections(device, dcf)
+    text = render(out, device.trailing_comments)
+    if detect_dialect(_as_read(out)) is not device.dialect:
         # Quoting and REAL forms depend on the dialect: say it where the text alone would mislead.
         text = f"; cantools-od: dialect={device.dialect.value}\n" + text
     return text

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-import json
 import os
 import tempfile
 from pathlib import Path
 from typing import Literal
+
+from pydantic import ValidationError
 
 from .eds.reader import read_bytes
 from .model import Device
@@ -27,8 +28,13 @@ def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: 
     EDS/DCF content never raises; JSON that is not a cantools-od model raises ValueError.
     """
     raw = data.encode("utf-8") if isinstance(data, str) else data
-    if fmt == "json" or (fmt is None and _is_json(raw)):
-        device = Device.model_validate_json(raw)  # ValueError when the JSON is not a model
+    if fmt == "json" or (fmt is None and raw.lstrip()[:1] == b"{"):
+        try:
+            device = Device.model_validate_json(raw)
+        except ValidationError as error:
+            if fmt == "json" or not _not_json(error):
+                raise  # JSON, but not a cantools-od model: a ValueError
+            return read_bytes(raw, source, node_id=node_id)  # an EDS that happens to start with "{"
         device.source = source or device.source
         if node_id is not None:
             device.node_id = node_id
@@ -37,14 +43,8 @@ def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: 
     return read_bytes(raw, source, node_id=node_id, dcf=dcf)
 
 
-def _is_json(raw: bytes) -> bool:
-    if raw.lstrip()[:1] != b"{":
-        return False
-    try:
-        json.loads(raw)
-    except ValueError:
-        return False  # not JSON: an EDS that happens to start with "{", read with diagnostics
-    return True
+def _not_json(error: ValidationError) -> bool:
+    return any(detail["type"] == "json_invalid" for detail in error.errors())
 
 
 def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> bytes:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from ..eds.keys import OBJECT_KEYS, Kind
 from ..model import Device, Diagnostic, NodeIdExpr, Severity, Variable
 from .rules import Context, Fix, declare
 
@@ -95,8 +96,8 @@ decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) co
 )
 
 
-_VALUE_KEYS = {"DefaultValue": "default", "ParameterValue": "parameter_value", "LowLimit": "low_limit",
-               "HighLimit": "high_limit"}  # fmt: skip
+# Keys whose values are typed by the data type, so may hold `$NODEID`: canonical key → model field.
+_VALUE_KEYS = {key: field for key, field, kind in OBJECT_KEYS.values() if kind is Kind.VALUE}
 
 
 def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:

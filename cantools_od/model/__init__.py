@@ -1,5 +1,6 @@
 """The typed object-dictionary model: CANopen, independent of any file format."""
 
+from .canopennode import CanopenNodeInfo, SrdoAccess
 from .datatypes import STANDARD_TYPES, DataType, ValueKind, standard_type, type_by_name
 from .device import (
     Comments,
@@ -19,6 +20,7 @@ from .values import NodeIdExpr, RawValue, TimeValue, Value
 __all__ = [
     "STANDARD_TYPES",
     "AccessType",
+    "CanopenNodeInfo",
     "Comments",
     "Commissioning",
     "DataType",
@@ -38,6 +40,7 @@ __all__ = [
     "RawValue",
     "Section",
     "Severity",
+    "SrdoAccess",
     "SubObject",
     "TimeValue",
     "Value",

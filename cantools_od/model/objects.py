@@ -6,6 +6,7 @@ from enum import IntEnum, StrEnum
 
 from pydantic import BaseModel, ConfigDict
 
+from .canopennode import CanopenNodeInfo
 from .datatypes import DataType, standard_type
 from .source import Origin
 from .values import NodeIdExpr, Value
@@ -74,6 +75,8 @@ class Variable(Section):
     param_refd: str | None = None
     upload_file: str | None = None
     download_file: str | None = None
+    # CANopenNode stack metadata (XDD properties, EDS ;StorageLocation=), None when the source has none
+    canopennode: CanopenNodeInfo | None = None
 
     @property
     def dtype(self) -> DataType | None:

@@ -44,6 +44,7 @@ def command(
     from ..api import write_if_changed
     from ..identifiers import is_identifier, pin_file_for
     from ..model import Severity
+    from ..model.cia301.pdo import frame_bits
     from ..render import renderer
     from ..views.codegen import build_view
 
@@ -52,7 +53,7 @@ def command(
         raise click.BadParameter(f"{base!r} is not a valid identifier", param_hint="--name")
     device = read_device(file, node_id)
     identifiers = identifiers_for(device, file, pin_file)
-    view = build_view(device, base, node_id, identifiers, max_pdo_bits=512 if can_fd else 64)
+    view = build_view(device, base, node_id, identifiers, max_pdo_bits=frame_bits(can_fd))
     # Read errors are shown; they fail the command only when they make generation impossible.
     report(device.diagnostics, minimum=Severity.ERROR)
     if view.problems:

@@ -3,6 +3,19 @@
 from __future__ import annotations
 
 from ..model import AccessType, Device, NodeIdExpr, Object, ObjectKind, SubObject
+from ..model.cia301.cobid import VALID
+from ..model.cia301.pdo import (
+    COMM_BASE,
+    COMM_SUBS,
+    MAP_BASE,
+    MAPPING_ENTRY_TYPE,
+    MAX_ENTRIES,
+    PDO_SPAN,
+    PREDEFINED,
+    RX,
+    U8,
+    count_pdos,
+)
 from . import ini
 from .keys import Kind
 from .report import Report
@@ -119,49 +132,39 @@ def _keep(device: Device, section: ini.IniSection, report: Report) -> None:
     device.other_sections.append(raw_section(section, report))
 
 
-_PDO_KINDS = (("rx", 0x1400, (0x200, 0x300, 0x400, 0x500)), ("tx", 0x1800, (0x180, 0x280, 0x380, 0x480)))
-_COMM_SUBS = (  # (sub-index, name, data type)
-    (1, "COB-ID", 0x0007),
-    (2, "Transmission type", 0x0005),
-    (3, "Inhibit time", 0x0006),
-    (4, "Compatibility entry", 0x0005),
-    (5, "Event timer", 0x0006),
-    (6, "SYNC start value", 0x0005),
-)
-
-
 def expand_compact_pdo(device: Device) -> None:
     """With CompactPDO≠0, the PDOs NrOfRXPDO/NrOfTXPDO count but the file omits (cia306.md §8.4)."""
     info = device.device_info
     mask = info.compact_pdo or 0
     if not mask:
         return
-    for direction, base, predefined in _PDO_KINDS:
-        wanted = (info.nr_of_rx_pdo if direction == "rx" else info.nr_of_tx_pdo) or 0
-        present = sum(1 for i in range(base, base + 0x200) if i in device.objects)
-        missing = max(0, min(wanted, 0x200) - present)
+    for direction, base in COMM_BASE.items():
+        predefined, map_base = PREDEFINED[direction], MAP_BASE[direction]
+        wanted = (info.nr_of_rx_pdo if direction == RX else info.nr_of_tx_pdo) or 0
+        present = count_pdos(device.objects, direction)
+        missing = max(0, min(wanted, PDO_SPAN) - present)
         number = 0
-        while missing and number < 0x200:
+        while missing and number < PDO_SPAN:
             if base + number not in device.objects:
-                cob_id = NodeIdExpr(offset=predefined[number]) if number < 4 else 0x80000000
+                cob_id = NodeIdExpr(offset=predefined[number]) if number < len(predefined) else VALID
                 device.objects[base + number] = _comm_object(base + number, mask, cob_id, direction)
-                if base + 0x200 + number not in device.objects:
-                    device.objects[base + 0x200 + number] = _mapping_object(base + 0x200 + number, direction)
+                if map_base + number not in device.objects:
+                    device.objects[map_base + number] = _mapping_object(map_base + number, direction)
                 missing -= 1
             number += 1
 
 
 def _comm_object(index: int, mask: int, cob_id: int | NodeIdExpr, direction: str) -> Object:
     subs = {}
-    for subindex, name, dtype in _COMM_SUBS:
+    for subindex, (name, dtype) in COMM_SUBS.items():
         if mask & (1 << (subindex - 1)):
             default: int | NodeIdExpr = {1: cob_id, 2: 0xFF}.get(subindex, 0)
             subs[subindex] = SubObject(name=name, data_type=dtype, access=AccessType.RW, default=default, implicit=True)
     subs[0] = SubObject(
-        name="Highest sub-index supported", data_type=0x0005, access=AccessType.RO,
+        name="Highest sub-index supported", data_type=U8, access=AccessType.RO,
         default=max(subs, default=0), implicit=True,
     )  # fmt: skip
-    kind = "RPDO" if direction == "rx" else "TPDO"
+    kind = "RPDO" if direction == RX else "TPDO"
     return Object(
         index=index, name=f"{kind} communication parameter", object_type=ObjectKind.RECORD,
         subs=dict(sorted(subs.items())), implicit=True,
@@ -169,14 +172,13 @@ def _comm_object(index: int, mask: int, cob_id: int | NodeIdExpr, direction: str
 
 
 def _mapping_object(index: int, direction: str) -> Object:
-    kind = "RPDO" if direction == "rx" else "TPDO"
-    subs = {
-        0: SubObject(name="Number of mapped objects", data_type=0x0005, access=AccessType.RW, default=0, implicit=True)
-    }
-    for subindex in range(1, 0x41):
+    kind = "RPDO" if direction == RX else "TPDO"
+    subs = {0: SubObject(name="Number of mapped objects", data_type=U8, access=AccessType.RW, default=0, implicit=True)}
+    for subindex in range(1, MAX_ENTRIES + 1):
         subs[subindex] = SubObject(
-            name=f"Mapped object {subindex}", data_type=0x0007, access=AccessType.RW, default=0, implicit=True
-        )
+            name=f"Mapped object {subindex}", data_type=MAPPING_ENTRY_TYPE, access=AccessType.RW, default=0,
+            implicit=True,
+        )  # fmt: skip
     return Object(
         index=index, name=f"{kind} mapping parameter", object_type=ObjectKind.RECORD, subs=subs, implicit=True
     )

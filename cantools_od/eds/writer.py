@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
+from ..model.cia301.pdo import partner
 from ..model.device import Commissioning, DeviceInfo, FileInfo
 from . import ini
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
@@ -91,8 +92,8 @@ def _explicit_indices(device: Device) -> set[int]:
         for index, obj in device.objects.items()
         if obj.implicit and (index not in implied or not same_object(obj, implied[index]))
     }
-    partners = {index + 0x200 if index & 0x200 == 0 else index - 0x200 for index in changed}
-    return written | changed | {index for index in partners if index in device.objects}
+    partners = {partner(index) for index in changed}
+    return written | changed | {index for index in partners if index is not None and index in device.objects}
 
 
 def _with_extra(name: str, entries: dict[str, str], section: Section) -> OutSection:

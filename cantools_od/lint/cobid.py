@@ -4,38 +4,32 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ..model import NodeIdExpr, Severity
-from . import network  # noqa: F401  (registers COB011, the network rule)
-from .pdoread import (
+from ..model import NodeIdExpr, Severity, standard_type
+from ..model.cia301.cobid import (
+    BASE_29BIT,
     EXTENDED,
-    PREDEFINED,
+    HIGH_BITS,
     RTR,
-    RX,
-    TX,
+    SERVICE_IDS,
     VALID,
     Cob,
-    Pdo,
-    Slot,
-    cob_entries,
     collisions,
     default_cob,
-    device_pdos,
-    first,
-    int_value,
-    node_ids,
-    producers,
-    slot,
+    restricted,
 )
+from ..model.cia301.connections import cob_entries, predefined_cob_base, producers
+from ..model.cia301.objects import COB_ID_EMCY, FIRST_SDO_SERVER
+from ..model.cia301.pdo import COMM_SUBS, PREDEFINED, RX, TX, Pdo
+from ..model.cia301.slots import Slot, slot
+from .pdoread import device_pdos, first, int_value, node_ids
 from .rules import Context, Finding, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
-U8, U16, U32 = 0x0005, 0x0006, 0x0007
-COMM_TYPES = {1: U32, 2: U8, 3: U16, 4: U8, 5: U16, 6: U8}
-TYPE_NAMES = {U8: "UNSIGNED8", U16: "UNSIGNED16", U32: "UNSIGNED32"}
-RESTRICTED = (
-    (0x000, 0x000), (0x001, 0x07F), (0x101, 0x180), (0x581, 0x5FF), (0x601, 0x67F), (0x6E0, 0x6FF), (0x701, 0x77F),
-    (0x780, 0x7FF),
-)  # fmt: skip
+
+
+def _type_name(index: int) -> str:
+    dtype = standard_type(index)
+    return dtype.name if dtype is not None else f"{index:04X}h"
 
 
 def _pdo_cobs(ctx: Context) -> Iterator[tuple[Pdo, Cob]]:
@@ -50,7 +44,7 @@ def _pdo_cobs(ctx: Context) -> Iterator[tuple[Pdo, Cob]]:
 
 def _high_bits(cob: Cob, node_id: int) -> bool:
     value = cob.at(node_id)
-    return not value & EXTENDED and bool(value & 0x1FFFF800)
+    return not value & EXTENDED and bool(value & HIGH_BITS)
 
 
 @rule(
@@ -82,12 +76,12 @@ def _valid_11bit(cob: Cob, node_id: int) -> int | None:
 
 def _restricted(cob: Cob, node_id: int) -> bool:
     can_id = _valid_11bit(cob, node_id)
-    return can_id is not None and any(low <= can_id <= high for low, high in RESTRICTED)
+    return can_id is not None and restricted(can_id)
 
 
 def _service_id(cob: Cob, node_id: int) -> bool:
     can_id = _valid_11bit(cob, node_id)
-    return can_id is not None and 0x080 <= can_id <= 0x100
+    return can_id is not None and can_id in SERVICE_IDS
 
 
 @rule(
@@ -142,13 +136,13 @@ def _predefined(ctx: Context) -> Iterator[tuple[Cob, int]]:
             cob = default_cob(pdo.comm_slot(1), pdo.name)
             if cob is not None:
                 yield cob, PREDEFINED[pdo.direction][pdo.number - 1]
-    for index, subindex, role, base in ((0x1014, 0, "EMCY", 0x80), (0x1200, 1, "SDO server 1200h (rx)", 0x600)):
+    sdo = FIRST_SDO_SERVER
+    for index, subindex, role in ((COB_ID_EMCY, 0, "EMCY"), (sdo, 1, f"SDO server {sdo:04X}h (rx)"),
+                                  (sdo, 2, f"SDO server {sdo:04X}h (tx)")):  # fmt: skip
         cob = default_cob(slot(ctx.device, index, subindex), role)
-        if cob is not None:
+        base = predefined_cob_base(index, subindex)
+        if cob is not None and base is not None:
             yield cob, base
-    cob = default_cob(slot(ctx.device, 0x1200, 2), "SDO server 1200h (tx)")
-    if cob is not None:
-        yield cob, 0x580
 
 
 @rule(
@@ -172,7 +166,7 @@ def check_predefined(ctx: Context) -> Iterator[Finding]:
             if value.offset & VALID or value.offset & ~RTR == base:
                 continue
             problem = f"{value.canonical()} is not the pre-defined $NODEID+0x{base:X}"
-        elif value & VALID and not value & 0x1FFFFFFF:
+        elif value & VALID and not value & BASE_29BIT:
             continue
         else:
             wanted = NodeIdExpr(offset=(value & (VALID | RTR)) | base).canonical()
@@ -310,12 +304,12 @@ with these sizes; another size makes the SDO download fail.""",
 )
 def check_comm_types(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
-        expected = COMM_TYPES.get(found.subindex)  # sub0: EDS025 checks every record's
+        expected = COMM_SUBS[found.subindex][1] if found.subindex in COMM_SUBS else None  # sub0: EDS025
         dtype = ctx.device.entry_type(found.var, found.owner)
         if expected is not None and dtype is not None and dtype.index != expected:
             yield ctx.report(
                 "PDO012",
-                f"{pdo.name}: {found.name} is {dtype.name}, expected {TYPE_NAMES[expected]}",
+                f"{pdo.name}: {found.name} is {dtype.name}, expected {_type_name(expected)}",
                 found.key_location(ctx, "DataType"),
             )
 

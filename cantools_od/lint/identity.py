@@ -6,14 +6,23 @@ from collections.abc import Callable, Iterator
 
 from ..eds.keys import BAUD_RATES
 from ..model import Device, Location, Severity, Value
+from ..model.cia301.objects import (
+    IDENTITY,
+    IDENTITY_PRODUCT_CODE,
+    IDENTITY_REVISION,
+    IDENTITY_SERIAL,
+    IDENTITY_VENDOR_ID,
+    MANDATORY,
+)
+from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
 from .common import present
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
-_IDENTITY = ((1, "VendorNumber", "vendor_number"), (2, "ProductNumber", "product_number"),
-             (3, "RevisionNumber", "revision_number"))  # fmt: skip
-_PDO_RANGES = (("NrOfRXPDO", "nr_of_rx_pdo", 0x1400, "RPDO"), ("NrOfTXPDO", "nr_of_tx_pdo", 0x1800, "TPDO"))
+_IDENTITY = ((IDENTITY_VENDOR_ID, "VendorNumber", "vendor_number"), (IDENTITY_PRODUCT_CODE, "ProductNumber",
+             "product_number"), (IDENTITY_REVISION, "RevisionNumber", "revision_number"))  # fmt: skip
+_PDO_COUNTS = (("NrOfRXPDO", "nr_of_rx_pdo", RX, "RPDO"), ("NrOfTXPDO", "nr_of_tx_pdo", TX, "TPDO"))
 
 
 def plain_int(value: Value | None) -> int | None:
@@ -34,7 +43,7 @@ without them cannot describe a conforming device.""",
 def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     listing = ctx.device.mandatory_objects
     where = ctx.at(listing) if listing is not None else Location(file=ctx.device.source, line=1, column=1)
-    for index, name in ((0x1000, "device type"), (0x1001, "error register"), (0x1018, "identity object")):
+    for index, name in MANDATORY.items():
         if index not in ctx.device.objects:
             yield ctx.report("EDS011", f"mandatory object {index:04X}h ({name}) is missing", where)
 
@@ -52,7 +61,7 @@ while 1018h sub3 = 0x00010000) makes them reject the right device or accept the 
     "AccessType=ro\nDefaultValue=0x00010000",
 )
 def identity(ctx: Context) -> Iterator[Finding]:
-    info, obj = ctx.device.device_info, ctx.device.objects.get(0x1018)
+    info, obj = ctx.device.device_info, ctx.device.objects.get(IDENTITY)
     if obj is None:
         return
     for subindex, key, field in _IDENTITY:
@@ -67,7 +76,7 @@ def identity(ctx: Context) -> Iterator[Finding]:
 
 def _fix_identity(subindex: int, field: str) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
-        obj = device.objects.get(0x1018)
+        obj = device.objects.get(IDENTITY)
         sub = obj.subs.get(subindex) if obj is not None else None
         value = plain_int(sub.default) if sub is not None else None
         if value is not None:
@@ -89,8 +98,8 @@ configured).""",
     "DataType=0x0007\nAccessType=ro\nParameterValue=0x00000018",
 )
 def serial_number(ctx: Context) -> Iterator[Finding]:
-    section, obj = ctx.device.commissioning, ctx.device.objects.get(0x1018)
-    sub = obj.subs.get(4) if obj is not None else None
+    section, obj = ctx.device.commissioning, ctx.device.objects.get(IDENTITY)
+    sub = obj.subs.get(IDENTITY_SERIAL) if obj is not None else None
     if section is None or not section.lss_serial_number or sub is None:
         return  # 0: not configured
     described = plain_int(sub.value())
@@ -111,18 +120,18 @@ these keys; a count that disagrees with the objects means a PDO is missing or th
 )
 def pdo_counts(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
-    for key, field, base, kind in _PDO_RANGES:
+    for key, field, direction, kind in _PDO_COUNTS:
         stated = getattr(info, field)
-        present = sum(1 for index in ctx.device.objects if base <= index < base + 0x200)
+        present = count_pdos(ctx.device.objects, direction)
         if stated is not None and stated != present:
-            fix = Fix(f"set {key}={present}", False, _fix_pdo_count(field, base))
+            fix = Fix(f"set {key}={present}", False, _fix_pdo_count(field, direction))
             message = f"{key}={stated} but {present} {kind} communication object{'s' if present != 1 else ''}"
             yield ctx.report("EDS041", message, ctx.value_at(info, key), fix)
 
 
-def _fix_pdo_count(field: str, base: int) -> Callable[[Device], None]:
+def _fix_pdo_count(field: str, direction: str) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
-        setattr(device.device_info, field, sum(1 for index in device.objects if base <= index < base + 0x200))
+        setattr(device.device_info, field, count_pdos(device.objects, direction))
 
     return apply
 
@@ -144,8 +153,7 @@ def static_mapping(ctx: Context) -> Iterator[Finding]:
     writable = [
         f"{index:04X}h"
         for index, obj in ctx.device.objects.items()
-        if (0x1600 <= index <= 0x17FF or 0x1A00 <= index <= 0x1BFF)
-        and any(sub.access is not None and sub.access.writable for sub in obj.subs.values())
+        if is_mapping(index) and any(sub.access is not None and sub.access.writable for sub in obj.subs.values())
     ]
     if writable:
         more = f" and {len(writable) - 3} more" if len(writable) > 3 else ""

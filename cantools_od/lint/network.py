@@ -6,7 +6,12 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from ..model import Device, Location, Severity
-from .pdoread import RTR, RX, TX, Cob, MapEntry, Pdo, cob_of, known_node_id, pdos, producers, slot, with_severity
+from ..model.cia301.cobid import RTR, Cob, cob_of, known_node_id
+from ..model.cia301.connections import producers
+from ..model.cia301.objects import COB_ID_SYNC
+from ..model.cia301.pdo import RX, TX, MapEntry, Pdo, pdos
+from ..model.cia301.slots import slot
+from .pdoread import with_severity
 from .rules import Context, Finding, LintOptions, rule
 
 
@@ -203,7 +208,7 @@ def _type_name(device: Device, entry: MapEntry) -> str | None:
 def _sync_producers(nodes: list[_Node]) -> Iterator[Finding]:
     first: _Node | None = None
     for node in nodes:
-        cob = cob_of(slot(node.device, 0x1005, 0), "SYNC")
+        cob = cob_of(slot(node.device, COB_ID_SYNC, 0), "SYNC")
         if cob is None or not isinstance(cob.value, int) or not cob.value & RTR:
             continue
         if first is None:

@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
+from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
+from ..model.cia301.pdo import PDO_AREA
 from ..model.datatypes import STANDARD_TYPES
 from .common import explicit_objects, explicit_vars, given, where
 from .rules import Context, Finding, Fix, rule
@@ -200,7 +202,7 @@ def sub0_type(ctx: Context) -> Iterator[Finding]:
 
 def _counts_entries(obj: Object, sub0: SubObject) -> bool:
     """Objects whose sub0 is a number of valid entries rather than the highest sub-index."""
-    if obj.index == 0x1003 or 0x1400 <= obj.index <= 0x1BFF:  # error history; PDOs (PDO010/PDO040)
+    if obj.index == ERROR_HISTORY or obj.index in PDO_AREA:  # error history; PDOs (PDO010/PDO040)
         return True
     return sub0.access is not None and sub0.access.writable
 
@@ -313,7 +315,7 @@ def undefined_types(ctx: Context) -> Iterator[Finding]:
         if dtype is None or dtype in STANDARD_TYPES:
             continue
         definition = objects.get(dtype)
-        if 0 < dtype < 0x1000 and definition is not None and definition.kind in _TYPE_KINDS:
+        if dtype in DATA_TYPE_AREA and definition is not None and definition.kind in _TYPE_KINDS:
             continue
         reason = "reserved data type index" if 0 < dtype < 0x0020 else "no DEFTYPE/DEFSTRUCT object defines it"
         message = f"{where(obj, subindex)}: DataType=0x{dtype:04X}: {reason}"
@@ -331,7 +333,7 @@ else, and nothing else belongs there (cia306.md §13). Index 0000h is not used."
 )
 def type_area(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
-        in_area = 0 < obj.index < 0x1000
+        in_area = obj.index in DATA_TYPE_AREA
         if obj.index == 0:
             yield ctx.report("EDS081", "[0000]: index 0000h is not used", ctx.at(obj))
         elif obj.kind in _TYPE_KINDS and not in_area:

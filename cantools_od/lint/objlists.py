@@ -6,13 +6,14 @@ from collections.abc import Callable, Collection, Iterator
 
 from ..eds import keys
 from ..model import Device, Location, ObjectList, Severity
+from ..model.cia301.objects import DATA_TYPE_AREA, MANUFACTURER_AREA
+from ..model.cia301.objects import MANDATORY as MANDATORY_INDICES
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
 MANDATORY, OPTIONAL, MANUFACTURER = "MandatoryObjects", "OptionalObjects", "ManufacturerObjects"
 LISTS = {MANDATORY: "mandatory_objects", OPTIONAL: "optional_objects", MANUFACTURER: "manufacturer_objects"}
-MANDATORY_INDICES = (0x1000, 0x1001, 0x1018)
 
 
 def object_list(device: Device, name: str) -> ObjectList | None:
@@ -22,11 +23,11 @@ def object_list(device: Device, name: str) -> ObjectList | None:
 
 def home(index: int) -> str | None:
     """The list an object belongs in by its index; None for data types (not listed)."""
-    if index < 0x1000:
+    if index < DATA_TYPE_AREA.stop:
         return None
     if index in MANDATORY_INDICES:
         return MANDATORY
-    return MANUFACTURER if 0x2000 <= index <= 0x5FFF else OPTIONAL
+    return MANUFACTURER if index in MANUFACTURER_AREA else OPTIONAL
 
 
 def listings(device: Device) -> Iterator[tuple[str, ObjectList, int, int]]:
@@ -223,7 +224,7 @@ object lists. lely dcfchk rejects them there ("data type objects are not support
 )
 def data_type_listed(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in listings(ctx.device):
-        if index < 0x1000:
+        if index < DATA_TYPE_AREA.stop:
             message = f"[{name}] {position}=0x{index:04X}: data types are not listed"
             yield ctx.report("EDS018", message, _entry_at(ctx, found, position))
 

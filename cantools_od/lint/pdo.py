@@ -5,27 +5,13 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 
 from ..model import AccessType, ObjectKind, Severity
-from .pdoread import (
-    MAX_ENTRIES,
-    RX,
-    TX,
-    MapEntry,
-    Pdo,
-    Slot,
-    device_pdos,
-    dummies,
-    dummy_type,
-    length_fix,
-    limits_fit,
-    mapped_objects,
-    named,
-    with_severity,
-)
+from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry, Pdo, dummy_type
+from ..model.cia301.slots import Slot
+from .pdoread import device_pdos, dummies, length_fix, limits_fit, mapped_objects, named, with_severity
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 BOOLEAN = 0x0001
-U32 = 0x0007
 
 
 # --- records ---------------------------------------------------------------------------------
@@ -119,7 +105,9 @@ def check_mapping_types(ctx: Context) -> Iterator[Finding]:
         for subindex, sub in pdo.mapping.subs.items():
             found = Slot(pdo.mapping, subindex, sub)
             dtype = ctx.device.entry_type(found.var, found.owner)
-            if subindex > 0 and dtype is not None and dtype.index != U32:  # sub0: EDS025 checks every record's
+            if (
+                subindex > 0 and dtype is not None and dtype.index != MAPPING_ENTRY_TYPE
+            ):  # sub0: EDS025 checks every record's
                 yield ctx.report(
                     "PDO064",
                     f"{pdo.name}: {found.name} is {dtype.name}, expected UNSIGNED32",
@@ -488,8 +476,9 @@ def check_dummy_in_tpdo(ctx: Context) -> Iterator[Finding]:
     "Mapping length byte with its MSB set",
     """
 The length byte of a mapping entry is at most 40h (64 bits). Some vendors set its MSB as a
-private flag (0x60410090); other tools read a length of 144 bits. The rules use the low 7 bits;
-clearing the flag is left to the author.""",
+private flag (0x60410090), but CiA 301 reads the whole byte as the length: 144 bits. lint, pdo
+and gen all read it that way (PDO045, PDO046 and GEN001 follow); clearing the flag is left to
+the author.""",
     "[1A00sub1]\nDefaultValue=0x60410090",
 )
 def check_length_flag(ctx: Context) -> Iterable[Finding]:

@@ -11,6 +11,7 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 
 from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
+from ..model.cia301.pdo import frame_bits
 
 
 @dataclass(frozen=True)
@@ -41,7 +42,7 @@ class LintOptions:
 
     @property
     def max_pdo_bits(self) -> int:
-        return 512 if self.can_fd else 64
+        return frame_bits(self.can_fd)
 
 
 class Context:

@@ -25,6 +25,19 @@ from ..model import (
     Variable,
     standard_type,
 )
+from ..model.cia301.cobid import ALL_NODE_IDS, BASE_11BIT
+from ..model.cia301.connections import predefined_cob_base
+from ..model.cia301.objects import (
+    FIRST_SDO_SERVER,
+    IDENTITY,
+    IDENTITY_PRODUCT_CODE,
+    IDENTITY_REVISION,
+    IDENTITY_VENDOR_ID,
+    MANDATORY,
+    MANUFACTURER_AREA,
+    SDO_SERVERS,
+)
+from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
 from .entries import loc
 from .facts import Norm, Source
 from .merge import Candidate, MergedEntry, MergedObject, MergeResult, Resolved, display
@@ -71,23 +84,23 @@ def build(merged: MergeResult, info: BuildInfo) -> tuple[Device, list[Diagnostic
         description=(info.description or "Imported from vendor documentation")[:243],
         created_by="cantools-od import-table",
     )
-    identity = device.objects.get(0x1018)
+    identity = device.objects.get(IDENTITY)
     name_obj = device.objects.get(0x1008)
     product = info.product_name
     if product is None and name_obj is not None and isinstance(name_obj.default, str):
         product = name_obj.default
     device.device_info = DeviceInfo(
         vendor_name=info.vendor_name,
-        vendor_number=_identity(identity, 1),
+        vendor_number=_identity(identity, IDENTITY_VENDOR_ID),
         product_name=product,
-        product_number=_identity(identity, 2),
-        revision_number=_identity(identity, 3),
+        product_number=_identity(identity, IDENTITY_PRODUCT_CODE),
+        revision_number=_identity(identity, IDENTITY_REVISION),
         simple_boot_up_master=False,
         simple_boot_up_slave=True,
         granularity=8 if _dynamic_mapping(device) else 0,
         group_messaging=False,
-        nr_of_rx_pdo=sum(1 for i in device.objects if 0x1400 <= i <= 0x15FF),
-        nr_of_tx_pdo=sum(1 for i in device.objects if 0x1800 <= i <= 0x19FF),
+        nr_of_rx_pdo=count_pdos(device.objects, RX),
+        nr_of_tx_pdo=count_pdos(device.objects, TX),
         lss_supported=False,
     )
     device.device_info.baud_rates = dict(info.baud_rates)
@@ -113,16 +126,15 @@ def _identity(identity: Object | None, sub: int) -> int | None:
 
 def _dynamic_mapping(device: Device) -> bool:
     for index, obj in device.objects.items():
-        mapping = 0x1600 <= index <= 0x17FF or 0x1A00 <= index <= 0x1BFF
-        if mapping and any(sub.access is not None and sub.access.writable for sub in obj.subs.values()):
+        if is_mapping(index) and any(sub.access is not None and sub.access.writable for sub in obj.subs.values()):
             return True
     return False
 
 
 def _lists(device: Device) -> None:
-    mandatory = [i for i in (0x1000, 0x1001, 0x1018) if i in device.objects]
-    optional = [i for i in device.objects if i not in mandatory and (i < 0x2000 or i >= 0x6000)]
-    manufacturer = [i for i in device.objects if 0x2000 <= i < 0x6000]
+    mandatory = [i for i in MANDATORY if i in device.objects]
+    optional = [i for i in device.objects if i not in mandatory and i not in MANUFACTURER_AREA]
+    manufacturer = [i for i in device.objects if i in MANUFACTURER_AREA]
     for attr, indices in (
         ("mandatory_objects", mandatory),
         ("optional_objects", optional),
@@ -235,17 +247,9 @@ def _fill(var: Variable, entry: MergedEntry, obj: MergedObject, problems: list[D
             var.low_limit = var.high_limit = None
 
 
-# Pre-defined connection set: the COB-ID entries and their base (CiA 301).
 def _cob_base(index: int, sub: int) -> int | None:
-    if index == 0x1014 and sub == 0:
-        return 0x80
-    if 0x1200 <= index <= 0x127F and sub in (1, 2):
-        return 0x600 if sub == 1 else 0x580
-    if 0x1400 <= index <= 0x1403 and sub == 1:
-        return 0x200 + 0x100 * (index - 0x1400)
-    if 0x1800 <= index <= 0x1803 and sub == 1:
-        return 0x180 + 0x100 * (index - 0x1800)
-    return None
+    """The pre-defined connection set's base; every SDO server is read like the default one."""
+    return predefined_cob_base(FIRST_SDO_SERVER if index in SDO_SERVERS else index, sub)
 
 
 def _node_relative(index: int, sub: int, value: int) -> NodeIdExpr | None:
@@ -253,9 +257,9 @@ def _node_relative(index: int, sub: int, value: int) -> NodeIdExpr | None:
     base = _cob_base(index, sub)
     if base is None:
         return None
-    flags = value & ~0x7FF
-    for node in (0x7F, 0x01):
-        if value & 0x7FF == base + node:
+    flags = value & ~BASE_11BIT
+    for node in (ALL_NODE_IDS[-1], ALL_NODE_IDS[0]):
+        if value & BASE_11BIT == base + node:
             return NodeIdExpr(offset=flags + base, text=f"0x{value:X}")
     return None
 

@@ -8,6 +8,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..model import AccessType, ObjectKind
+from ..model.cia301.objects import SDO_SERVERS
+from ..model.cia301.pdo import COMM_BASE, MAP_BASE, PDO_SPAN, RX, TX
 from .entries import Kind
 from .facts import Fact, Source
 
@@ -100,18 +102,18 @@ STANDARD_OBJECTS: dict[int, StdObject] = {
     0x1019: _var("Synchronous counter overflow value", U8, RW),
     0x1029: StdObject("Error behavior", ObjectKind.ARRAY, {0: _HIGHEST}, StdEntry("Error class", U8, RW)),
 }
-for _n in range(0x80):
-    STANDARD_OBJECTS[0x1200 + _n] = StdObject("SDO server parameter", ObjectKind.RECORD, _SDO)
-for _n in range(0x200):
-    STANDARD_OBJECTS[0x1400 + _n] = StdObject("RPDO communication parameter", ObjectKind.RECORD, _PDO_COMM)
-    STANDARD_OBJECTS[0x1800 + _n] = StdObject("TPDO communication parameter", ObjectKind.RECORD, _PDO_COMM)
-    STANDARD_OBJECTS[0x1600 + _n] = StdObject(
+for _index in SDO_SERVERS:
+    STANDARD_OBJECTS[_index] = StdObject("SDO server parameter", ObjectKind.RECORD, _SDO)
+for _n in range(PDO_SPAN):
+    STANDARD_OBJECTS[COMM_BASE[RX] + _n] = StdObject("RPDO communication parameter", ObjectKind.RECORD, _PDO_COMM)
+    STANDARD_OBJECTS[COMM_BASE[TX] + _n] = StdObject("TPDO communication parameter", ObjectKind.RECORD, _PDO_COMM)
+    STANDARD_OBJECTS[MAP_BASE[RX] + _n] = StdObject(
         "RPDO mapping parameter",
         ObjectKind.RECORD,
         {0: StdEntry("Number of mapped objects", U8, None)},
         _PDO_MAP_ELEMENT,
     )
-    STANDARD_OBJECTS[0x1A00 + _n] = StdObject(
+    STANDARD_OBJECTS[MAP_BASE[TX] + _n] = StdObject(
         "TPDO mapping parameter",
         ObjectKind.RECORD,
         {0: StdEntry("Number of mapped objects", U8, None)},

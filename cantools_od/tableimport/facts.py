@@ -7,11 +7,12 @@ when it is short. Nothing is invented beyond that."""
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Protocol
 
 from ..model import AccessType, NodeIdExpr, ObjectKind, Severity
+from ..model.cia301.pdo import locate, partner
 from .entries import Cell, Kind, RawEntry, ReadResult
 from .notation import (
     IndexSpec,
@@ -86,8 +87,9 @@ def expand(results: Iterable[ReadResult]) -> tuple[list[Fact], list[ReadResult]]
     known = {f.index for f in facts}
     partners = set()
     for index in known:
-        if 0x1400 <= index <= 0x17FF or 0x1800 <= index <= 0x1BFF:
-            partners.add(index ^ 0x0200 if (index & 0x0200) else index + 0x0200)
+        other = partner(index)
+        if other is not None:
+            partners.add(other)
     concrete = known | partners
     by_file = {r.file: r for r in results}
     unexpanded: set[tuple[str, int, int, int]] = set()
@@ -138,8 +140,8 @@ def _learn_letter(entry: RawEntry, letters: dict[str, int]) -> None:
         return
     if match.group(2):
         letters[match.group(1).upper()] = int(match.group(2))
-    elif not spec.is_range and 0x1400 <= spec.first <= 0x1BFF:
-        letters.setdefault(match.group(1).upper(), (spec.first & 0x1FF) + 1)
+    elif not spec.is_range and (pdo := locate(spec.first)) is not None:
+        letters.setdefault(match.group(1).upper(), pdo[2])
 
 
 def _entry_facts(
@@ -210,105 +212,149 @@ class _Emit(Protocol):  # the signature of `emit` above, for mypy
     ) -> None: ...
 
 
+@dataclass(frozen=True)
+class _FieldCell:
+    """One cell of a row, with what a field handler needs to turn it into facts."""
+
+    entry: RawEntry
+    result: ReadResult
+    field: str
+    raw: str
+    text: str
+    line: int
+    subs: list[int | None]
+    emit: _Emit
+
+    def warn(self, message: str) -> None:
+        self.result.warn("IMP010", message, self.line)
+
+
 def _field_facts(
     entry: RawEntry, result: ReadResult, field: str, cell: Cell, subs: list[int | None], emit: _Emit
 ) -> None:
-    raw = cell.text
-    text = clean(raw)
-    line = cell.line
-    if field == "name":
-        if not text or is_blank(text):
+    handler = _FIELD_HANDLERS.get(field, _note if field in NOTE_FIELDS else None)
+    if handler is not None:
+        handler(_FieldCell(entry, result, field, cell.text, clean(cell.text), cell.line, subs, emit))
+
+
+def _name(c: _FieldCell) -> None:
+    if not c.text or is_blank(c.text):
+        return
+    prose = (
+        len(c.text) > 100
+        or re.search(r"\. [A-Z]", c.text)
+        or c.text.lower().startswith(("will return", "returns", "are used"))
+    )
+    c.emit("description" if prose else "name", c.raw, c.text, c.line)
+
+
+def _object_code(c: _FieldCell) -> None:
+    if is_blank(c.text):
+        return
+    code = parse_object_code(c.text)
+    if code is None:
+        c.warn(f"object code {c.text!r} not understood")
+        return
+    c.emit("entry_code" if c.subs != [None] else "object_code", c.raw, code, c.line)
+
+
+def _data_type(c: _FieldCell) -> None:
+    if is_blank(c.text) or c.text.lower() == "size":
+        return
+    spec = parse_type(c.text)
+    if spec is None:
+        c.warn(f"data type {c.text!r} not understood; left unknown")
+        c.emit("unknown_type", c.raw, c.text, c.line)
+    elif spec.container is not None:
+        c.emit("object_code", c.raw, spec.container, c.line, sub_list=[None])
+    elif spec.index is not None:
+        c.emit("data_type", c.raw, spec.index, c.line, note=spec.note)
+
+
+def _access(c: _FieldCell) -> None:
+    spec = parse_access(c.text)
+    if spec is None:
+        if not is_blank(c.text):
+            c.warn(f"access {c.text!r} not understood; left unknown")
+        return
+    if spec.per_index:
+        for index, access in spec.per_index.items():
+            c.emit("access", c.raw, access, c.line, note=spec.note, only=frozenset([index]))
+    elif spec.access is not None:
+        c.emit("access", c.raw, spec.access, c.line, note=spec.note)
+
+
+def _pdo_mapping(c: _FieldCell) -> None:
+    spec = parse_mapping(c.text)
+    if spec is None or spec.mappable is None:
+        if c.text and not is_blank(c.text):
+            c.warn(f"PDO mapping {c.text!r} not understood; left unknown")
+        return
+    c.emit("pdo_mapping", c.raw, spec.mappable, c.line)
+    if spec.direction in ("rx", "tx"):
+        c.emit("direction", c.raw, spec.direction, c.line)
+
+
+def _default(c: _FieldCell) -> None:
+    per_index = split_per_index(c.text)
+    if per_index:
+        for index, value in per_index.items():
+            c.emit("default", value, None, c.line, only=frozenset([index]))
+    elif not is_blank(c.text):
+        c.emit("default", c.raw, None, c.line)
+
+
+def _range(c: _FieldCell) -> None:
+    spec = parse_range(c.text)
+    if spec is None:
+        return
+    if spec.type_index is not None:
+        c.emit("data_type", c.raw, spec.type_index, c.line, kind=Kind.DERIVED, note="type name given as value range")
+    if spec.low is not None and spec.high is not None:
+        c.emit("low", str(spec.low), None, c.line, note="from value range")
+        c.emit("high", str(spec.high), None, c.line, note="from value range")
+
+
+def _limit(c: _FieldCell) -> None:
+    if is_blank(c.text):
+        return
+    scale = c.entry.fields.get("scale")
+    number = parse_number(c.text)
+    if number is None:
+        return
+    if scale and "." in c.text:
+        factor = parse_number(scale[0].text)
+        if isinstance(factor, float) and factor > 0:
+            c.emit(c.field, str(round(number / factor)), None, c.line, note=f"{c.text} / 1LSB {scale[0].text}")
             return
-        if (
-            len(text) > 100
-            or re.search(r"\. [A-Z]", text)
-            or text.lower().startswith(("will return", "returns", "are used"))
-        ):
-            emit("description", raw, text, line)
-            return
-        emit("name", raw, text, line)
-    elif field == "object_code":
-        if is_blank(text):
-            return
-        code = parse_object_code(text)
-        if code is None:
-            result.warn("IMP010", f"object code {text!r} not understood", line)
-            return
-        if subs != [None]:
-            emit("entry_code", raw, code, line)
-        else:
-            emit("object_code", raw, code, line)
-    elif field == "data_type":
-        if is_blank(text) or text.lower() == "size":
-            return
-        spec = parse_type(text)
-        if spec is None:
-            result.warn("IMP010", f"data type {text!r} not understood; left unknown", line)
-            emit("unknown_type", raw, text, line)
-            return
-        if spec.container is not None:
-            emit("object_code", raw, spec.container, line, sub_list=[None])
-            return
-        if spec.index is not None:
-            emit("data_type", raw, spec.index, line, note=spec.note)
-    elif field == "access":
-        spec_a = parse_access(text)
-        if spec_a is None:
-            if not is_blank(text):
-                result.warn("IMP010", f"access {text!r} not understood; left unknown", line)
-            return
-        if spec_a.per_index:
-            for index, access in spec_a.per_index.items():
-                emit("access", raw, access, line, note=spec_a.note, only=frozenset([index]))
-        elif spec_a.access is not None:
-            emit("access", raw, spec_a.access, line, note=spec_a.note)
-    elif field == "pdo_mapping":
-        spec_m = parse_mapping(text)
-        if spec_m is None or spec_m.mappable is None:
-            if text and not is_blank(text):
-                result.warn("IMP010", f"PDO mapping {text!r} not understood; left unknown", line)
-            return
-        emit("pdo_mapping", raw, spec_m.mappable, line)
-        if spec_m.direction in ("rx", "tx"):
-            emit("direction", raw, spec_m.direction, line)
-    elif field == "default":
-        per_index = split_per_index(text)
-        if per_index:
-            for index, value in per_index.items():
-                emit("default", value, None, line, only=frozenset([index]))
-            return
-        if is_blank(text):
-            return
-        emit("default", raw, None, line)
-    elif field == "range":
-        spec_r = parse_range(text)
-        if spec_r is None:
-            return
-        if spec_r.type_index is not None:
-            emit("data_type", raw, spec_r.type_index, line, kind=Kind.DERIVED, note="type name given as value range")
-        if spec_r.low is not None and spec_r.high is not None:
-            emit("low", str(spec_r.low), None, line, note="from value range")
-            emit("high", str(spec_r.high), None, line, note="from value range")
-    elif field in ("low", "high"):
-        if is_blank(text):
-            return
-        scale = entry.fields.get("scale")
-        number = parse_number(text)
-        if number is None:
-            return
-        if scale and "." in text:
-            factor = parse_number(scale[0].text)
-            if isinstance(factor, float) and factor > 0:
-                emit(field, str(round(number / factor)), None, line, note=f"{text} / 1LSB {scale[0].text}")
-                return
-        emit(field, text, None, line)
-    elif field == "description":
-        constant = re.search(r"(?:constant|default)\s+value\s*(?:=|is)\s*(0x[0-9A-Fa-f]+|\d+)", text, re.IGNORECASE)
-        if constant:
-            emit("default", constant.group(1), None, line, note="stated in the description")
-        emit("description", raw, text, line)
-    elif field in NOTE_FIELDS and text and not is_blank(text):
-        emit(field, raw, text, line)
+    c.emit(c.field, c.text, None, c.line)
+
+
+def _description(c: _FieldCell) -> None:
+    constant = re.search(r"(?:constant|default)\s+value\s*(?:=|is)\s*(0x[0-9A-Fa-f]+|\d+)", c.text, re.IGNORECASE)
+    if constant:
+        c.emit("default", constant.group(1), None, c.line, note="stated in the description")
+    c.emit("description", c.raw, c.text, c.line)
+
+
+def _note(c: _FieldCell) -> None:
+    if c.text and not is_blank(c.text):
+        c.emit(c.field, c.raw, c.text, c.line)
+
+
+# One handler per table column: how its cells become facts.
+_FIELD_HANDLERS: dict[str, Callable[[_FieldCell], None]] = {
+    "name": _name,
+    "object_code": _object_code,
+    "data_type": _data_type,
+    "access": _access,
+    "pdo_mapping": _pdo_mapping,
+    "default": _default,
+    "range": _range,
+    "low": _limit,
+    "high": _limit,
+    "description": _description,
+}
 
 
 _LETTER = re.compile(r"^\s*([A-D])\s*(?:\(\s*default\s*=\s*(\d+)\s*\))?", re.IGNORECASE)

@@ -15,13 +15,16 @@ conflict: they are used only where no source says anything.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
 from collections import defaultdict
 from dataclasses import dataclass
 from typing import Literal
 
 from ..model import AccessType, NodeIdExpr, ObjectKind, standard_type
-from .cia import STANDARD_OBJECTS, record_layout
+from ..model.cia301.objects import DATA_TYPE_AREA
+from ..model.cia301.pdo import COMM_BASE, MAP_BASE, PDO_SPAN
+from .cia import STANDARD_OBJECTS, StdEntry, record_layout
 from .entries import Kind
 from .facts import LATE_FIELDS, Fact, Norm, Source
 from .notation import norm_name, parse_number, parse_value, type_name
@@ -235,7 +238,7 @@ def merge(facts: list[Fact], options: MergeOptions, files: list[str]) -> MergeRe
     excluded: dict[int, str] = {}
     excluded_entries: list[tuple[int, int, str]] = []
     for index in sorted(indices):
-        if index < 0x1000:
+        if index < DATA_TYPE_AREA.stop:
             continue  # data-type definitions, used through `records`
         if index in options.exclude:
             excluded[index] = options.exclude[index]
@@ -282,74 +285,15 @@ def _merge_object(
         {f.source for (i, _s, _f), fs in by_key.items() if i == index for f in fs}, key=lambda s: (s.file, s.line)
     )
     standard = STANDARD_OBJECTS.get(index)
-    # --- object code
     code_facts = facts(None, "object_code")
     if standard is not None:
         code_facts.append(_inferred_fact(index, None, "object_code", standard.kind))
     code = resolve(code_facts, "object_code", index, None, options, conflicts)
-    has_entries = any(s > 0 for s in subs)
-    kind: ObjectKind
-    if code is not None and isinstance(code.value, ObjectKind):
-        kind = code.value
-    else:
-        entry_codes = facts(0, "entry_code")
-        kind = ObjectKind.RECORD if has_entries else ObjectKind.VAR
-        if not has_entries and entry_codes:
-            kind = ObjectKind.VAR
-    if kind in (ObjectKind.ARRAY, ObjectKind.RECORD) and not has_entries and code is not None:
-        sub0 = [f for (i, s, _f), fs in by_key.items() if i == index and s == 0 for f in fs]
-        if sub0 and (all(f.implicit_sub for f in sub0) or _one_value(sub0)):
-            # A block stating RECORD but describing one value without sub-indices: a VAR in fact.
-            structural = Fact(
-                index,
-                None,
-                "object_code",
-                "one entry, no sub-index",
-                ObjectKind.VAR,
-                Source("", 0, "structure", Kind.DERIVED),
-                ("", 0),
-            )
-            candidates = [Candidate(kind, code.facts), Candidate(ObjectKind.VAR, [structural])]
-            reason = "stated as a container, but described as one value without sub-indices"
-            conflicts.append(Conflict(index, None, "object_code", candidates, 1, "structure", reason))
-            kind = ObjectKind.VAR
-    if kind in (ObjectKind.VAR, ObjectKind.DOMAIN, ObjectKind.DEFTYPE) and has_entries:
-        structural = Fact(
-            index,
-            None,
-            "object_code",
-            "sub-indices > 0 documented",
-            ObjectKind.RECORD,
-            Source("", 0, "structure", Kind.DERIVED),
-            ("", 0),
-        )
-        stated = code.facts if code is not None else []
-        if stated:
-            conflicts.append(
-                Conflict(
-                    index,
-                    None,
-                    "object_code",
-                    [Candidate(kind, stated), Candidate(ObjectKind.RECORD, [structural])],
-                    1,
-                    "structure",
-                    "the object is stated to be a VAR but sub-indices above 0 are documented",
-                )
-            )
-        kind = ObjectKind.RECORD
-        # what the VAR's own row said (type, access) speaks for the elements, not for sub-index 0
-        for key in [k for k in by_key if k[0] == index and k[1] == 0]:
-            moved = [f for f in by_key[key] if f.implicit_sub and f.field in ("data_type", "access", "pdo_mapping")]
-            if moved:
-                by_key[key] = [f for f in by_key[key] if f not in moved]
-                by_key[(index, None, key[2])] = by_key.get((index, None, key[2]), []) + moved
+    kind = _object_kind(index, code, subs, by_key, conflicts)
     obj = MergedObject(index, kind, sources=obj_sources)
     if code is not None:
         obj.fields["object_code"] = code
-    # --- name
-    name_facts = facts(None, "name")
-    if kind not in (ObjectKind.ARRAY, ObjectKind.RECORD):
-        name_facts += facts(0, "name")
+    name_facts = facts(None, "name") + (facts(0, "name") if kind not in (ObjectKind.ARRAY, ObjectKind.RECORD) else [])
     name = resolve(name_facts, "name", index, None, options, conflicts)
     if name is None and standard is not None:
         name = Resolved(standard.name, [_inferred_fact(index, None, "name", standard.name)], inferred=True)
@@ -360,22 +304,15 @@ def _merge_object(
         found = facts(None, note) + (facts(0, note) if kind is ObjectKind.VAR else [])
         if found:
             obj.notes[note] = str(found[0].value)
-    # --- object-level type, access, mapping, default: go to the VAR or to the entries
+    # object-level type, access, mapping, default: go to the VAR or to the entries
     obj_type = resolve(facts(None, "data_type"), "data_type", index, None, options, conflicts)
     if obj_type is not None:
         obj.fields["data_type"] = obj_type
     if kind in (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT):
-        entry_subs = sorted(subs)
         record = None
         if obj_type is not None and isinstance(obj_type.value, int) and obj_type.value in RECORD_TYPES:
             record = records.get(obj_type.value) or record_layout(obj_type.value)
-        if entry_subs and 0 not in entry_subs:
-            entry_subs.insert(0, 0)
-            inferred.append((index, 0, "exists", "sub-index 0 (highest sub-index) added: the manual omits it"))
-        for sub in entry_subs:
-            if (index, sub) in options.exclude_entries:
-                excluded_entries.append((index, sub, options.exclude_entries[(index, sub)]))
-                continue
+        for sub in _entry_subs(index, subs, options, inferred, excluded_entries):
             entry = _merge_entry(index, sub, kind, obj_type, record, by_key, options, conflicts, inferred)
             if entry is not None:
                 obj.entries[sub] = entry
@@ -388,6 +325,91 @@ def _merge_object(
     return obj
 
 
+def _entry_subs(
+    index: int,
+    subs: set[int],
+    options: MergeOptions,
+    inferred: list[tuple[int, int | None, str, str]],
+    excluded_entries: list[tuple[int, int, str]],
+) -> list[int]:
+    """The sub-indices of a container to merge: sub0 added when the manual omits it, exclusions left out."""
+    entry_subs = sorted(subs)
+    if entry_subs and 0 not in entry_subs:
+        entry_subs.insert(0, 0)
+        inferred.append((index, 0, "exists", "sub-index 0 (highest sub-index) added: the manual omits it"))
+    kept = []
+    for sub in entry_subs:
+        if (index, sub) in options.exclude_entries:
+            excluded_entries.append((index, sub, options.exclude_entries[(index, sub)]))
+        else:
+            kept.append(sub)
+    return kept
+
+
+def _structural(index: int, raw: str, kind: ObjectKind) -> Fact:
+    """The object code the structure of the rows implies, as a derived fact."""
+    return Fact(index, None, "object_code", raw, kind, Source("", 0, "structure", Kind.DERIVED), ("", 0))
+
+
+def _object_kind(
+    index: int,
+    code: Resolved | None,
+    subs: set[int],
+    by_key: dict[tuple[int, int | None, str], list[Fact]],
+    conflicts: list[Conflict],
+) -> ObjectKind:
+    """The object code: as stated, else from the rows; corrected where the rows contradict it."""
+    has_entries = any(s > 0 for s in subs)
+    kind: ObjectKind
+    if code is not None and isinstance(code.value, ObjectKind):
+        kind = code.value
+    else:
+        kind = ObjectKind.RECORD if has_entries else ObjectKind.VAR
+    if kind in (ObjectKind.ARRAY, ObjectKind.RECORD) and not has_entries and code is not None:
+        sub0 = [f for (i, s, _f), fs in by_key.items() if i == index and s == 0 for f in fs]
+        if sub0 and (all(f.implicit_sub for f in sub0) or _one_value(sub0)):
+            # A block stating RECORD but describing one value without sub-indices: a VAR in fact.
+            structural = _structural(index, "one entry, no sub-index", ObjectKind.VAR)
+            candidates = [Candidate(kind, code.facts), Candidate(ObjectKind.VAR, [structural])]
+            reason = "stated as a container, but described as one value without sub-indices"
+            conflicts.append(Conflict(index, None, "object_code", candidates, 1, "structure", reason))
+            kind = ObjectKind.VAR
+    if kind in (ObjectKind.VAR, ObjectKind.DOMAIN, ObjectKind.DEFTYPE) and has_entries:
+        _var_with_entries(index, kind, code, by_key, conflicts)
+        kind = ObjectKind.RECORD
+    return kind
+
+
+def _var_with_entries(
+    index: int,
+    kind: ObjectKind,
+    code: Resolved | None,
+    by_key: dict[tuple[int, int | None, str], list[Fact]],
+    conflicts: list[Conflict],
+) -> None:
+    """A VAR with sub-indices above 0 documented is a RECORD: say so, and move its own row to the object."""
+    stated = code.facts if code is not None else []
+    if stated:
+        structural = _structural(index, "sub-indices > 0 documented", ObjectKind.RECORD)
+        conflicts.append(
+            Conflict(
+                index,
+                None,
+                "object_code",
+                [Candidate(kind, stated), Candidate(ObjectKind.RECORD, [structural])],
+                1,
+                "structure",
+                "the object is stated to be a VAR but sub-indices above 0 are documented",
+            )
+        )
+    # what the VAR's own row said (type, access) speaks for the elements, not for sub-index 0
+    for key in [k for k in by_key if k[0] == index and k[1] == 0]:
+        moved = [f for f in by_key[key] if f.implicit_sub and f.field in ("data_type", "access", "pdo_mapping")]
+        if moved:
+            by_key[key] = [f for f in by_key[key] if f not in moved]
+            by_key[(index, None, key[2])] = by_key.get((index, None, key[2]), []) + moved
+
+
 _COUNT_NAME = re.compile(r"number|largest|highest|max(?:imum)?\s*sub|entries|sub-?index", re.IGNORECASE)
 
 
@@ -398,7 +420,7 @@ def _one_value(sub0: list[Fact]) -> bool:
     return bool(names) and not any(_COUNT_NAME.search(n) for n in names) and types != {0x05}
 
 
-PDO_FAMILIES = ((0x1400, 0x15FF), (0x1600, 0x17FF), (0x1800, 0x19FF), (0x1A00, 0x1BFF))
+PDO_FAMILIES = tuple((base, base + PDO_SPAN - 1) for bases in (COMM_BASE, MAP_BASE) for base in bases.values())
 
 
 def _from_siblings(objects: dict[int, MergedObject], inferred: list[tuple[int, int | None, str, str]]) -> None:
@@ -441,6 +463,19 @@ def _inferred_fact(index: int, sub: int | None, field_name: str, value: Norm) ->
     return Fact(index, sub, field_name, str(value), value, Source("CiA 301", 0, "inferred", Kind.INFERRED), ("", 0))
 
 
+def _entry_field_facts(
+    by_key: dict[tuple[int, int | None, str], list[Fact]], index: int, sub: int, container: bool, field_name: str
+) -> list[Fact]:
+    """The facts of one field of an entry, with what the object's own row says for it."""
+    found = list(by_key.get((index, sub, field_name), []))
+    # Object-level values speak for the VAR; for a container, access speaks for every entry
+    # and PDO mapping for the elements (sub-index 0 is never mapped).
+    speaks = not container or field_name == "access" or (field_name == "pdo_mapping" and sub > 0)
+    if speaks and field_name in ("access", "pdo_mapping", "default", "low", "high"):
+        found += by_key.get((index, None, field_name), [])
+    return found
+
+
 def _merge_entry(
     index: int,
     sub: int,
@@ -453,52 +488,20 @@ def _merge_entry(
     inferred: list[tuple[int, int | None, str, str]],
 ) -> MergedEntry | None:
     container = kind in (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
-
-    def facts(field_name: str) -> list[Fact]:
-        found = list(by_key.get((index, sub, field_name), []))
-        # Object-level values speak for the VAR; for a container, access speaks for every entry
-        # and PDO mapping for the elements (sub-index 0 is never mapped).
-        speaks = not container or field_name == "access" or (field_name == "pdo_mapping" and sub > 0)
-        if speaks and field_name in ("access", "pdo_mapping", "default", "low", "high"):
-            found += by_key.get((index, None, field_name), [])
-        return found
-
+    facts = functools.partial(_entry_field_facts, by_key, index, sub, container)
     entry = MergedEntry(sub)
     standard = STANDARD_OBJECTS.get(index)
     std_entry = standard.entry(sub) if standard is not None else None
-    # --- data type
-    type_facts = facts("data_type")
-    element = obj_type is not None and isinstance(obj_type.value, int) and obj_type.value not in RECORD_TYPES
-    if container and sub > 0 and obj_type is not None and element:
-        type_facts += obj_type.facts
-    if not container and obj_type is not None:
-        type_facts += obj_type.facts
-    if container and record is not None and sub in record:
-        ref = record[sub]
-        ref_kind = Kind.INFERRED if ref.source.kind is Kind.INFERRED else Kind.RECORD_DEF
-        ref_source = Source(ref.source.file, ref.source.line, f"record definition {ref.index:04X}h", ref_kind)
-        type_facts.append(Fact(index, sub, "data_type", ref.raw, ref.value, ref_source, ref.row))
-    if std_entry is not None and std_entry.data_type is not None:
-        type_facts.append(_inferred_fact(index, sub, "data_type", std_entry.data_type))
-    elif container and sub == 0:
-        type_facts.append(_inferred_fact(index, sub, "data_type", 0x05))
+    type_facts = _type_facts(index, sub, container, obj_type, record, std_entry, facts("data_type"))
     dtype = resolve(type_facts, "data_type", index, sub, options, conflicts)
     if dtype is not None:
         entry.fields["data_type"] = dtype
         if dtype.inferred:
             inferred.append((index, sub, "data_type", display(dtype.value, "data_type")))
     type_index = int(dtype.value) if dtype is not None and isinstance(dtype.value, int) else None
-    # --- name (entries of containers)
-    if container:
-        name = resolve(facts("name"), "name", index, sub, options, conflicts)
-        if name is None:
-            fallback = std_entry.name if std_entry is not None else ("Highest sub-index supported" if sub == 0 else "")
-            if fallback:
-                name = Resolved(fallback, [_inferred_fact(index, sub, "name", fallback)], inferred=True)
-                inferred.append((index, sub, "name", fallback))
-        if name is not None:
-            entry.fields["name"] = name
-    # --- access
+    name = _entry_name(index, sub, std_entry, facts("name"), options, conflicts, inferred) if container else None
+    if name is not None:  # names of entries of containers
+        entry.fields["name"] = name
     access_facts = facts("access")
     if std_entry is not None and std_entry.access is not None:
         access_facts.append(_inferred_fact(index, sub, "access", std_entry.access))
@@ -509,32 +512,13 @@ def _merge_entry(
         entry.fields["access"] = access
         if access.inferred:
             inferred.append((index, sub, "access", str(access.value)))
-    # --- PDO mapping
     mapping = resolve(facts("pdo_mapping"), "pdo_mapping", index, sub, options, conflicts)
     if mapping is not None:
         entry.fields["pdo_mapping"] = mapping
     directions = {str(f.value) for f in facts("direction")}
     entry.direction = directions.pop() if len(directions) == 1 else None
-    # --- values, read with the type now known
-    for field_name in LATE_FIELDS:
-        parsed: list[Fact] = []
-        for fact in facts(field_name):
-            spec = parse_default(fact.raw, type_index) if field_name == "default" else _limit(fact.raw, type_index)
-            if spec is None:
-                continue
-            value, note = spec
-            parsed.append(
-                Fact(
-                    fact.index,
-                    fact.sub,
-                    fact.field,
-                    fact.raw,
-                    value,
-                    fact.source,
-                    fact.row,
-                    "; ".join(n for n in (fact.note, note) if n),
-                )
-            )
+    for field_name in LATE_FIELDS:  # values, read with the type now known
+        parsed = _late_facts(facts(field_name), field_name, type_index)
         resolved = resolve(parsed, field_name, index, sub, options, conflicts, type_index)
         if resolved is not None:
             entry.fields[field_name] = resolved
@@ -547,9 +531,65 @@ def _merge_entry(
         by_key.get((index, sub, f))
         for f in ("exists", "name", "access", "data_type", "default", "pdo_mapping", "description")
     )
-    if not present and sub != 0:
-        return None
-    return entry
+    return entry if present or sub == 0 else None
+
+
+def _entry_name(
+    index: int,
+    sub: int,
+    std_entry: StdEntry | None,
+    stated: list[Fact],
+    options: MergeOptions,
+    conflicts: list[Conflict],
+    inferred: list[tuple[int, int | None, str, str]],
+) -> Resolved | None:
+    """The name of a container's entry: stated, else CiA 301's (marked inferred)."""
+    name = resolve(stated, "name", index, sub, options, conflicts)
+    if name is None:
+        fallback = std_entry.name if std_entry is not None else ("Highest sub-index supported" if sub == 0 else "")
+        if fallback:
+            name = Resolved(fallback, [_inferred_fact(index, sub, "name", fallback)], inferred=True)
+            inferred.append((index, sub, "name", fallback))
+    return name
+
+
+def _type_facts(
+    index: int,
+    sub: int,
+    container: bool,
+    obj_type: Resolved | None,
+    record: dict[int, Fact] | None,
+    std_entry: StdEntry | None,
+    stated: list[Fact],
+) -> list[Fact]:
+    """Every fact about an entry's data type: stated, the object's, the record definition's, CiA 301's."""
+    type_facts = list(stated)
+    element = obj_type is not None and isinstance(obj_type.value, int) and obj_type.value not in RECORD_TYPES
+    if obj_type is not None and (not container or (sub > 0 and element)):
+        type_facts += obj_type.facts
+    if container and record is not None and sub in record:
+        ref = record[sub]
+        ref_kind = Kind.INFERRED if ref.source.kind is Kind.INFERRED else Kind.RECORD_DEF
+        ref_source = Source(ref.source.file, ref.source.line, f"record definition {ref.index:04X}h", ref_kind)
+        type_facts.append(Fact(index, sub, "data_type", ref.raw, ref.value, ref_source, ref.row))
+    if std_entry is not None and std_entry.data_type is not None:
+        type_facts.append(_inferred_fact(index, sub, "data_type", std_entry.data_type))
+    elif container and sub == 0:
+        type_facts.append(_inferred_fact(index, sub, "data_type", 0x05))
+    return type_facts
+
+
+def _late_facts(facts: list[Fact], field_name: str, type_index: int | None) -> list[Fact]:
+    """Default and limit facts with their values read for the entry's data type; unreadable ones dropped."""
+    parsed: list[Fact] = []
+    for fact in facts:
+        spec = parse_default(fact.raw, type_index) if field_name == "default" else _limit(fact.raw, type_index)
+        if spec is None:
+            continue
+        value, note = spec
+        joined = "; ".join(n for n in (fact.note, note) if n)
+        parsed.append(Fact(fact.index, fact.sub, fact.field, fact.raw, value, fact.source, fact.row, joined))
+    return parsed
 
 
 def _limit(raw: str, type_index: int | None) -> tuple[Norm, str] | None:

@@ -27,6 +27,7 @@ from ..model import (
     ValueKind,
     Variable,
 )
+from ..model.cia301.pdo import CLASSIC_CAN_BITS
 from .pdo import Pdo, pdo_map
 
 
@@ -145,7 +146,7 @@ class DeviceView:
     pdos: tuple[PdoView, ...]
     node_id: int | None  # the one given, else the DCF's NodeID
     problems: tuple[Diagnostic, ...] = field(default=())
-    max_pdo_bits: int = 64  # the frame limit PDOs were checked against (512 with CAN FD)
+    max_pdo_bits: int = CLASSIC_CAN_BITS  # the frame limit PDOs were checked against (512 with CAN FD)
 
     @property
     def source_name(self) -> str:
@@ -190,7 +191,7 @@ def build_view(
     name: str,
     node_id: int | None = None,
     identifiers: Identifiers | None = None,
-    max_pdo_bits: int = 64,
+    max_pdo_bits: int = CLASSIC_CAN_BITS,
 ) -> DeviceView:
     """The view of `device`; `problems` lists what makes generated PDO code impossible."""
     ids = identifiers or assign(device)
@@ -214,6 +215,8 @@ def build_view(
             if problem:
                 problems.append(_diagnostic(device, pdo, problem))
             view_entries.append(PdoEntryView(target, mapped.bit_offset, mapped.bit_length, mapped.data_type))
+        if pdo.count_invalid:
+            problems.append(_diagnostic(device, pdo, f"{pdo.name}: its mapping counts {pdo.count} entries, at most 64"))
         if pdo.bit_length > max_pdo_bits:
             problems.append(
                 _diagnostic(device, pdo, f"{pdo.name}: its {pdo.bit_length} bits exceed the {max_pdo_bits}-bit frame")

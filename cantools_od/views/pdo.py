@@ -5,10 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..identifiers import Identifiers, assign
-from ..model import DataType, Device, NodeIdExpr, standard_type
-
-RPDO_COMM, RPDO_MAP, TPDO_COMM, TPDO_MAP = 0x1400, 0x1600, 0x1800, 0x1A00
-PDO_SPAN = 0x200  # 512 PDOs per direction
+from ..model import DataType, Device, NodeIdExpr
+from ..model.cia301.pdo import MapEntry, count_invalid, dummy_type, is_dummy_index, pdos
 
 
 @dataclass(frozen=True)
@@ -24,7 +22,7 @@ class PdoEntry:
 
     @property
     def is_dummy(self) -> bool:
-        return self.index < 0x1000
+        return is_dummy_index(self.index)
 
     @property
     def data_type_name(self) -> str:
@@ -40,6 +38,12 @@ class Pdo:
     cob_id: int | NodeIdExpr | None
     transmission_type: int | None
     entries: tuple[PdoEntry, ...]
+    count: int | None = None  # sub0 of the mapping record as configured
+
+    @property
+    def count_invalid(self) -> bool:
+        """Sub0 counts more than 64 entries and is not an MPDO's FEh/FFh: no mapping can be read."""
+        return count_invalid(self.count)
 
     @property
     def name(self) -> str:
@@ -51,35 +55,26 @@ class Pdo:
 
 
 def pdo_map(device: Device, node_id: int | None = None, identifiers: Identifiers | None = None) -> list[Pdo]:
-    """Every PDO whose communication or mapping object the device has, RPDOs first."""
+    """Every PDO whose communication or mapping object the device has, RPDOs first (the cia301 reading)."""
     ids = identifiers or assign(device)
     nid = node_id if node_id is not None else device.node_id
-    pdos: list[Pdo] = []
-    for direction, comm_base, map_base in (("rx", RPDO_COMM, RPDO_MAP), ("tx", TPDO_COMM, TPDO_MAP)):
-        for offset in range(PDO_SPAN):
-            comm, mapping = device.objects.get(comm_base + offset), device.objects.get(map_base + offset)
-            if comm is None and mapping is None:
-                continue
-            cob_id = _int_or_expr(_value(device, comm_base + offset, 1, nid))
-            transmission = _value(device, comm_base + offset, 2, nid)
-            pdos.append(
-                Pdo(
-                    direction=direction,
-                    number=offset + 1,
-                    comm_index=comm_base + offset,
-                    map_index=map_base + offset,
-                    cob_id=cob_id,
-                    transmission_type=transmission if isinstance(transmission, int) else None,
-                    entries=tuple(_entries(device, map_base + offset, ids)),
-                )
+    found: list[Pdo] = []
+    for pdo in pdos(device):
+        cob, transmission = pdo.comm_slot(1), pdo.comm_slot(2)
+        transmission_type = transmission.value(nid) if transmission is not None else None
+        found.append(
+            Pdo(
+                direction=pdo.direction,
+                number=pdo.number,
+                comm_index=pdo.comm_index,
+                map_index=pdo.map_index,
+                cob_id=_int_or_expr(cob.value(nid) if cob is not None else None),
+                transmission_type=transmission_type if isinstance(transmission_type, int) else None,
+                entries=tuple(_entry(device, entry, ids) for entry in pdo.mapped()),
+                count=pdo.count,
             )
-    return pdos
-
-
-def _value(device: Device, index: int, subindex: int, node_id: int | None) -> object:
-    obj = device.objects.get(index)
-    entry = obj.entry(subindex) if obj is not None else None
-    return entry.value(node_id) if entry is not None else None
+        )
+    return found
 
 
 def _int_or_expr(value: object) -> int | NodeIdExpr | None:
@@ -88,25 +83,10 @@ def _int_or_expr(value: object) -> int | NodeIdExpr | None:
     return value if isinstance(value, (int, NodeIdExpr)) else None
 
 
-def _entries(device: Device, map_index: int, ids: Identifiers) -> list[PdoEntry]:
-    count = _value(device, map_index, 0, None)
-    if not isinstance(count, int) or isinstance(count, bool):
-        return []
-    entries: list[PdoEntry] = []
-    offset = 0
-    for subindex in range(1, min(count, 0x40) + 1):
-        raw = _value(device, map_index, subindex, None)
-        if not isinstance(raw, int) or isinstance(raw, bool) or raw == 0:
-            continue
-        index, sub, bits = (raw >> 16) & 0xFFFF, (raw >> 8) & 0xFF, raw & 0xFF
-        entries.append(_entry(device, index, sub, offset, bits, ids))
-        offset += bits
-    return entries
-
-
-def _entry(device: Device, index: int, subindex: int, offset: int, bits: int, ids: Identifiers) -> PdoEntry:
-    if index < 0x1000:  # a dummy entry names a data type
-        dtype = standard_type(index)
+def _entry(device: Device, mapped: MapEntry, ids: Identifiers) -> PdoEntry:
+    index, subindex, offset, bits = mapped.index, mapped.subindex, mapped.offset, mapped.bits
+    if mapped.is_dummy:  # a dummy entry names a data type
+        dtype = dummy_type(device, index)
         name = dtype.name if dtype is not None else f"type 0x{index:04X}"
         return PdoEntry(index, subindex, offset, bits, name, dtype, None, dtype is not None)
     obj = device.objects.get(index)

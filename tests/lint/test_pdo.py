@@ -304,7 +304,11 @@ def test_pdo053_length_msb() -> None:
     (found,) = findings(text, "PDO053")
     assert found.message == "TPDO1: entry 0x60410090 has the length byte's MSB set (0x90)"
     assert at(found) == value_at(text, "1A00sub1")
-    assert findings(text, "PDO045") == []  # the low 7 bits, 16, are right
+    # CiA 301 reads the whole byte as the length: 144 bits, the one reading lint, pdo and gen share
+    (length,) = findings(text, "PDO045")
+    assert "maps 144 bits" in length.message and length.fix is None  # clearing the flag is the author's call
+    (total,) = findings(text, "PDO046")
+    assert "144 bits" in total.message
 
 
 # --- robustness -----------------------------------------------------------------------------------

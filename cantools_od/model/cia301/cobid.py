@@ -1,0 +1,117 @@
+"""COB-IDs (CiA 301 §7.2, §7.3): the bits of a COB-ID entry, the pre-defined connection set and the
+restricted CAN-IDs, and a COB-ID entry read from its configured value."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from ..device import Device
+from ..source import Location
+from ..values import NodeIdExpr
+from .slots import Locator, Slot, as_int
+
+VALID, RTR, EXTENDED = 1 << 31, 1 << 30, 1 << 29  # bit 31 set: invalid; 30: no RTR / produces; 29: 29-bit
+BASE_11BIT, BASE_29BIT = 0x7FF, 0x1FFFFFFF
+HIGH_BITS = BASE_29BIT & ~BASE_11BIT  # bits 28-11: 0 in an 11-bit COB-ID
+ALL_NODE_IDS = range(1, 128)
+
+# The pre-defined connection set: COB-ID = base + node-ID (PDOs 1-4: pdo.PREDEFINED).
+EMCY_BASE, SDO_RX_BASE, SDO_TX_BASE, HEARTBEAT_BASE = 0x080, 0x600, 0x580, 0x700
+SYNC_ID, TIME_ID = 0x080, 0x100
+SERVICE_IDS = range(SYNC_ID, TIME_ID + 1)  # SYNC, EMCY of the pre-defined set, TIME
+# CAN-IDs no PDO may use (CiA 301 v4.2, restricted CAN-IDs).
+RESTRICTED = (
+    (0x000, 0x000), (0x001, 0x07F), (0x101, 0x180), (0x581, 0x5FF), (0x601, 0x67F), (0x6E0, 0x6FF), (0x701, 0x77F),
+    (0x780, 0x7FF),
+)  # fmt: skip
+
+
+def restricted(can_id: int) -> bool:
+    """Whether an 11-bit CAN-ID is one a PDO must not use."""
+    return any(low <= can_id <= high for low, high in RESTRICTED)
+
+
+@dataclass(frozen=True)
+class Cob:
+    """A COB-ID entry: its slot (None for the implicit NMT error-control COB-ID) and its value."""
+
+    slot: Slot | None
+    value: int | NodeIdExpr
+    role: str  # "TPDO1", "EMCY", "SDO server 1200h (tx)", "heartbeat", ...
+
+    @property
+    def symbolic(self) -> bool:
+        return isinstance(self.value, NodeIdExpr)
+
+    def at(self, node_id: int) -> int:
+        value = self.value.resolve(node_id) if isinstance(self.value, NodeIdExpr) else self.value
+        return value & 0xFFFFFFFF
+
+    def can_id(self, node_id: int) -> tuple[bool, int]:
+        """(29-bit frame, CAN-ID) for one node-ID."""
+        value = self.at(node_id)
+        extended = bool(value & EXTENDED)
+        return extended, value & (BASE_29BIT if extended else BASE_11BIT)
+
+    def valid(self, node_id: int) -> bool:
+        return not self.at(node_id) & VALID
+
+    @property
+    def written(self) -> str:
+        return self.value.canonical() if isinstance(self.value, NodeIdExpr) else f"0x{self.value:X}"
+
+    def shown(self, node_id: int) -> str:
+        """The COB-ID as written, with its value for `node_id` when it uses $NODEID."""
+        suffix = f" (0x{self.at(node_id):X} for node-ID {node_id})" if self.symbolic else ""
+        return self.written + suffix
+
+    def describe(self, node_id: int) -> str:
+        extended, can_id = self.can_id(node_id)
+        return f"{can_id:08X}h (29-bit)" if extended else f"{can_id:03X}h"
+
+    def location(self, at: Locator) -> Location:
+        return self.slot.location(at) if self.slot is not None else at.at(None)
+
+
+def cob_of(found: Slot | None, role: str) -> Cob | None:
+    if found is None:
+        return None
+    value = found.value()
+    if isinstance(value, NodeIdExpr):
+        return Cob(found, value, role) if value.offset >= 0 else None
+    number = as_int(value)
+    return Cob(found, number, role) if number is not None and number >= 0 else None
+
+
+def default_cob(found: Slot | None, role: str) -> Cob | None:
+    """The COB-ID as the EDS defaults it (DefaultValue, not a DCF's ParameterValue)."""
+    value = found.var.default if found is not None else None
+    if found is None or not isinstance(value, (int, NodeIdExpr)) or isinstance(value, bool):
+        return None
+    return Cob(found, value, role) if (value.offset if isinstance(value, NodeIdExpr) else value) >= 0 else None
+
+
+def known_node_id(device: Device, option: int | None) -> int | None:
+    node_id = option if option is not None else device.node_id
+    return node_id if node_id is not None and 1 <= node_id <= 127 else None
+
+
+def collisions(cobs: list[Cob], ids: range | list[int]) -> Iterator[tuple[Cob, Cob, int]]:
+    """Pairs of valid COB-IDs with one CAN-ID, each with the first node-ID where they meet.
+
+    CAN-ID 0 (NMT) counts as not configured: several entries left at 0 are no collision.
+    """
+    if not any(cob.symbolic for cob in cobs):
+        ids = ids[:1]
+    met: set[tuple[int, int]] = set()
+    for node_id in ids:
+        seen: dict[tuple[bool, int], int] = {}
+        for position, cob in enumerate(cobs):
+            can_id = cob.can_id(node_id)
+            if not cob.valid(node_id) or not can_id[1]:
+                continue
+            earlier = seen.setdefault(can_id, position)
+            if earlier != position and (earlier, position) not in met:
+                met.add((earlier, position))
+                yield cobs[earlier], cob, node_id

@@ -1,0 +1,229 @@
+"""PDOs (CiA 301 §7.2.2, §7.4.8, §7.5.2.35-38): where their records live, how a mapping entry is read,
+and the one reading of a device's PDOs that the linter, the views, the generators and the importer share.
+
+A PDO is its communication record (1400h/1800h + n - 1) and mapping record (1600h/1A00h + n - 1),
+decoded from the configured values (ParameterValue, else DefaultValue). A mapping entry is an
+UNSIGNED32: index (bits 31-16), sub-index (15-8) and the length in bits (7-0, the whole byte:
+a length byte with its MSB set is read as the length it says, not as a flag). Sub0 counts the
+entries 1..sub0; FEh and FFh mark multiplexed PDOs, which carry no fixed mapping.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+from ..datatypes import DataType, standard_type
+from ..device import Device
+from ..objects import Object, ObjectKind
+from .cobid import Cob, cob_of
+from .objects import DATA_TYPE_AREA
+from .slots import Slot, as_int
+
+RX, TX = "rx", "tx"
+COMM_BASE = {RX: 0x1400, TX: 0x1800}
+MAP_BASE = {RX: 0x1600, TX: 0x1A00}
+PDO_SPAN = 0x200  # 512 PDOs per direction
+PDO_AREA = range(COMM_BASE[RX], MAP_BASE[TX] + PDO_SPAN)  # 1400h-1BFFh
+MAX_ENTRIES = 0x40
+SAM_MPDO, DAM_MPDO = 0xFE, 0xFF
+CLASSIC_CAN_BITS, CAN_FD_BITS = 64, 512
+# The pre-defined connection set's COB-ID bases of PDOs 1-4 (COB-ID = base + node-ID).
+PREDEFINED = {RX: (0x200, 0x300, 0x400, 0x500), TX: (0x180, 0x280, 0x380, 0x480)}
+
+U8, U16, U32 = 0x0005, 0x0006, 0x0007
+# The PDO_COMMUNICATION_PARAMETER record (0020h): sub-index -> (name, data type).
+COMM_SUBS = {
+    1: ("COB-ID", U32),
+    2: ("Transmission type", U8),
+    3: ("Inhibit time", U16),
+    4: ("Compatibility entry", U8),
+    5: ("Event timer", U16),
+    6: ("SYNC start value", U8),
+}
+MAPPING_ENTRY_TYPE = U32
+
+
+def frame_bits(can_fd: bool) -> int:
+    """The bits one PDO may carry: a classic CAN frame's 8 bytes, or CAN FD's 64."""
+    return CAN_FD_BITS if can_fd else CLASSIC_CAN_BITS
+
+
+def locate(index: int) -> tuple[str, str, int] | None:
+    """("comm" or "map", direction, 1-based number) of a PDO record's index, else None."""
+    for kind, bases in (("comm", COMM_BASE), ("map", MAP_BASE)):
+        for direction, base in bases.items():
+            if base <= index < base + PDO_SPAN:
+                return kind, direction, index - base + 1
+    return None
+
+
+def is_comm(index: int, direction: str | None = None) -> bool:
+    found = locate(index)
+    return found is not None and found[0] == "comm" and direction in (None, found[1])
+
+
+def is_mapping(index: int) -> bool:
+    found = locate(index)
+    return found is not None and found[0] == "map"
+
+
+def partner(index: int) -> int | None:
+    """The other record of the same PDO: the mapping record of a communication record, and back."""
+    found = locate(index)
+    if found is None:
+        return None
+    kind, direction, number = found
+    return (MAP_BASE if kind == "comm" else COMM_BASE)[direction] + number - 1
+
+
+def count_pdos(indices: Iterable[int], direction: str) -> int:
+    """How many communication records of `direction` the indices hold (what NrOfRXPDO/NrOfTXPDO count)."""
+    return sum(1 for index in indices if is_comm(index, direction))
+
+
+def is_mpdo_count(count: int | None) -> bool:
+    """Sub0 FEh/FFh: a source- or destination-addressed multiplexed PDO (CiA 301 §7.2.3)."""
+    return count in (SAM_MPDO, DAM_MPDO)
+
+
+def count_invalid(count: int | None) -> bool:
+    """Sub0 above 64 and not an MPDO: the mapping counts more entries than a PDO holds."""
+    return count is not None and count > MAX_ENTRIES and not is_mpdo_count(count)
+
+
+def decode_entry(raw: int) -> tuple[int, int, int]:
+    """(index, sub-index, length in bits) of a mapping entry."""
+    return (raw >> 16) & 0xFFFF, (raw >> 8) & 0xFF, raw & 0xFF
+
+
+def is_dummy_index(index: int) -> bool:
+    """A mapping entry naming a data type (below 1000h) is a dummy: the receiver skips its bits."""
+    return index < DATA_TYPE_AREA.stop
+
+
+@dataclass(frozen=True)
+class MapEntry:
+    """One mapping entry (sub-index `position` of a mapping record): index, sub-index, bit length."""
+
+    slot: Slot
+    position: int
+    raw: int
+    offset: int  # bit offset in the PDO, from the entries before it
+
+    @property
+    def index(self) -> int:
+        return decode_entry(self.raw)[0]
+
+    @property
+    def subindex(self) -> int:
+        return decode_entry(self.raw)[1]
+
+    @property
+    def flagged(self) -> bool:
+        """The length byte has its MSB set: some vendors mean a private flag, CiA 301 a length above 127."""
+        return bool(self.raw & 0x80)
+
+    @property
+    def bits(self) -> int:
+        return decode_entry(self.raw)[2]
+
+    @property
+    def is_dummy(self) -> bool:
+        return is_dummy_index(self.index)
+
+    @property
+    def target(self) -> str:
+        return f"{self.index:04X}sub{self.subindex:X}"
+
+
+@dataclass(frozen=True)
+class Pdo:
+    direction: str
+    number: int  # 1-based
+    comm: Object | None
+    mapping: Object | None
+
+    @property
+    def name(self) -> str:
+        return f"{'R' if self.direction == RX else 'T'}PDO{self.number}"
+
+    @property
+    def comm_index(self) -> int:
+        return COMM_BASE[self.direction] + self.number - 1
+
+    @property
+    def map_index(self) -> int:
+        return MAP_BASE[self.direction] + self.number - 1
+
+    def comm_slot(self, subindex: int) -> Slot | None:
+        var = self.comm.entry(subindex) if self.comm is not None and self.comm.has_subs else None
+        return Slot(self.comm, subindex, var) if self.comm is not None and var is not None else None
+
+    def comm_int(self, subindex: int) -> int | None:
+        found = self.comm_slot(subindex)
+        return as_int(found.value()) if found is not None else None
+
+    def count_slot(self) -> Slot | None:
+        var = self.mapping.entry(0) if self.mapping is not None and self.mapping.has_subs else None
+        return Slot(self.mapping, 0, var) if self.mapping is not None and var is not None else None
+
+    @property
+    def count(self) -> int | None:
+        found = self.count_slot()
+        return as_int(found.value()) if found is not None else None
+
+    @property
+    def is_mpdo(self) -> bool:
+        return is_mpdo_count(self.count)
+
+    def entries(self) -> Iterator[MapEntry]:
+        """The entries 1..sub0 that are described and hold a number, zero entries included.
+
+        Nothing for a count above 64: an MPDO (FEh, FFh) or an invalid count (PDO040).
+        """
+        count, mapping = self.count, self.mapping
+        if count is None or count > MAX_ENTRIES or mapping is None or not mapping.has_subs:
+            return
+        offset = 0
+        for position in range(1, count + 1):
+            var = mapping.subs.get(position)
+            raw = as_int(var.value()) if var is not None else None
+            if var is None or raw is None:
+                continue
+            entry = MapEntry(Slot(mapping, position, var), position, raw & 0xFFFFFFFF, offset)
+            if raw:
+                offset += entry.bits
+            yield entry
+
+    def mapped(self) -> list[MapEntry]:
+        return [entry for entry in self.entries() if entry.raw]
+
+    @property
+    def bit_length(self) -> int:
+        return sum(entry.bits for entry in self.mapped())
+
+    def cob(self) -> Cob | None:
+        return cob_of(self.comm_slot(1), self.name)
+
+
+def pdos(device: Device) -> list[Pdo]:
+    """Every PDO whose communication or mapping object exists, RPDOs first."""
+    found: list[Pdo] = []
+    for direction in (RX, TX):
+        for number in range(PDO_SPAN):
+            comm = device.objects.get(COMM_BASE[direction] + number)
+            mapping = device.objects.get(MAP_BASE[direction] + number)
+            if comm is not None or mapping is not None:
+                found.append(Pdo(direction, number + 1, comm, mapping))
+    return found
+
+
+def dummy_type(device: Device, index: int) -> DataType | None:
+    """The fixed-size data type a dummy entry names: a CiA 301 type or a DEFTYPE alias."""
+    dtype = standard_type(index)
+    if dtype is None:
+        alias = device.objects.get(index)
+        if alias is not None and alias.kind is ObjectKind.DEFTYPE:
+            dtype = standard_type(alias.data_type)
+    return dtype if dtype is not None and dtype.bits is not None else None

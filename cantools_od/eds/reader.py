@@ -119,6 +119,28 @@ def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
             obj = assemble(Object, fields, _OBJECT_DEFAULTS)
             device.objects[index] = obj
             deferred.append((obj, None, collected))
+    _read_sub_sections(device, subs, deferred, report)
+    for obj in device.objects.values():
+        if len(obj.subs) > 1:
+            obj.subs = dict(sorted(obj.subs.items()))
+    type_values(device, deferred, report)
+    expand_compact_sub_objects(device)
+    apply_compact_sections(device, compact, report)
+    expand_compact_pdo(device)
+    device.objects = dict(sorted(device.objects.items()))
+    if device.commissioning is not None:
+        device.node_id = device.commissioning.node_id
+        device.is_dcf = True
+    return device
+
+
+def _read_sub_sections(
+    device: Device,
+    subs: list[tuple[int, int, ini.IniSection]],
+    deferred: list[tuple[Object, SubObject | None, Collected]],
+    report: Report,
+) -> None:
+    """[xxxxsubN] sections into their objects; one without its object is kept as text (EDS103)."""
     for index, subindex, section in subs:
         parent = device.objects.get(index)
         if parent is None or subindex > 0xFF:
@@ -136,18 +158,6 @@ def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
         sub = assemble(SubObject, {**collected.fields, **collected.common()}, _SUB_DEFAULTS)
         parent.subs[subindex] = sub
         deferred.append((parent, sub, collected))
-    for obj in device.objects.values():
-        if len(obj.subs) > 1:
-            obj.subs = dict(sorted(obj.subs.items()))
-    type_values(device, deferred, report)
-    expand_compact_sub_objects(device)
-    apply_compact_sections(device, compact, report)
-    expand_compact_pdo(device)
-    device.objects = dict(sorted(device.objects.items()))
-    if device.commissioning is not None:
-        device.node_id = device.commissioning.node_id
-        device.is_dcf = True
-    return device
 
 
 def _merge_duplicates(sections: list[ini.IniSection], report: Report) -> list[ini.IniSection]:

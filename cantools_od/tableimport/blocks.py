@@ -108,83 +108,109 @@ def _pairs(line: Line) -> tuple[str | None, list[tuple[str, Cell]], list[str]] |
 
 def read_blocks(lines: list[Line], result: ReadResult, layout: str, used: set[int]) -> list[RawEntry]:
     """Every key/value block of a manual."""
-    entries: list[RawEntry] = []
-    block: _Block | None = None
-    title: Cell | None = None
-    hex_singles = False
+    reader = _BlockReader(result, layout, used)
     for line in lines:
         if line.number in used:
-            title = None  # a table between a heading and a block: the heading is the table's
-            continue
-        if line.blank:
-            continue
+            reader.title = None  # a table between a heading and a block: the heading is the table's
+        elif not line.blank:
+            reader.read(line)
+    reader.finish()
+    for entry in reader.entries:
+        entry.hex_singles = entry.hex_singles or reader.hex_singles
+    return reader.entries
+
+
+_Parsed = tuple[str | None, list[tuple[str, Cell]], list[str]]
+
+
+class _BlockReader:
+    """The state of reading a manual's lines into key/value blocks."""
+
+    def __init__(self, result: ReadResult, layout: str, used: set[int]) -> None:
+        self.result, self.layout, self.used = result, layout, used
+        self.entries: list[RawEntry] = []
+        self.block: _Block | None = None
+        self.title: Cell | None = None
+        self.hex_singles = False
+
+    def finish(self) -> None:
+        if self.block is not None:
+            self.entries.extend(_finish(self.block, self.result, self.layout))
+            self.block = None
+
+    def read(self, line: Line) -> None:
         parsed = _pairs(line)
-        if parsed is not None and not parsed[1] and not _name_line_allowed(block, parsed):
-            parsed = None
-        if parsed is not None and parsed[0] is not None and parsed[1] and not _name_line_allowed(block, parsed):
+        if (
+            parsed is not None
+            and (parsed[0] is not None or not parsed[1])
+            and not _name_line_allowed(self.block, parsed)
+        ):
             parsed = None
         if parsed is None:
-            if block is not None and _MARKER.search(line.raw.strip().strip("*").strip()):
-                continue
-            if block is not None:
-                entries.extend(_finish(block, result, layout))
-                block = None
-            found = heading_title(line.raw) or _object_heading(line)
-            if found is not None:
-                title = Cell(found, line.number)
-            elif title is not None and line.number - title.line > 80:
-                title = None
-            continue
+            self._plain(line)
+        else:
+            self._pairs_line(line, parsed)
+
+    def _plain(self, line: Line) -> None:
+        """A line without keys: a marker inside a block, else the end of the block and maybe a heading."""
+        if self.block is not None and _MARKER.search(line.raw.strip().strip("*").strip()):
+            return
+        self.finish()
+        found = heading_title(line.raw) or _object_heading(line)
+        if found is not None:
+            self.title = Cell(found, line.number)
+        elif self.title is not None and line.number - self.title.line > 80:
+            self.title = None
+
+    def _pairs_line(self, line: Line, parsed: _Parsed) -> None:
         lead, pairs, loose = parsed
-        keys = [k for k, _ in pairs]
-        if "index" in keys:
-            if block is not None:
-                entries.extend(_finish(block, result, layout))
-            block = _Block(dict(pairs)["index"], line.number)
-            block.title, title = title, None
+        if "index" in (k for k, _ in pairs):
+            self.finish()
+            self.block = _Block(dict(pairs)["index"], line.number)
+            self.block.title, self.title = self.title, None
+        block = self.block
         if block is None:
-            continue
+            return
         block.lines += 1
-        used.add(line.number)
+        self.used.add(line.number)
         if lead is not None:
             if block.current is None or "name" in block.current.fields:
-                _start_entry(block, result, layout, hex_singles)
+                _start_entry(block, self.result, self.layout, self.hex_singles)
             assert block.current is not None
             block.current.add("name", lead, line.number)
         for key, value in pairs:
-            if key == "index":
-                continue
-            if key == "sub":
-                if re.fullmatch(r"0[A-Fa-f]|[0-9][A-Fa-f]", clean(value.text)):
-                    hex_singles = True
-                current = block.current
-                if current is not None and current.sub is None and not current.fields.keys() - {"access", "name"}:
-                    current.sub = value
-                    continue
-                _start_entry(block, result, layout, hex_singles)
-                assert block.current is not None
-                block.current.sub = value
-                continue
-            if block.current is None and key in OBJECT_FIELDS:
-                block.object_fields.setdefault(key, []).append(value)
-                continue
+            if key != "index":
+                self._pair(block, key, value)
+        if block.current is not None:
+            for cell in loose:
+                text = clean(cell)
+                if re.match(r"(?i)value\s*=", text):
+                    block.current.add("default", text, line.number)
+                elif re.match(r"(?i)range\b", text):
+                    block.current.add("range", text, line.number)
+
+    def _pair(self, block: _Block, key: str, value: Cell) -> None:
+        if key == "sub":
+            self._sub(block, value)
+        elif block.current is None and key in OBJECT_FIELDS:
+            block.object_fields.setdefault(key, []).append(value)
+        else:
             if block.current is None:
-                _start_entry(block, result, layout, hex_singles)
+                _start_entry(block, self.result, self.layout, self.hex_singles)
             assert block.current is not None
             block.current.add(key, value.text, value.line)
-        for cell in loose:
-            if block.current is None:
-                continue
-            text = clean(cell)
-            if re.match(r"(?i)value\s*=", text):
-                block.current.add("default", text, line.number)
-            elif re.match(r"(?i)range\b", text):
-                block.current.add("range", text, line.number)
-    if block is not None:
-        entries.extend(_finish(block, result, layout))
-    for entry in entries:
-        entry.hex_singles = entry.hex_singles or hex_singles
-    return entries
+
+    def _sub(self, block: _Block, value: Cell) -> None:
+        """A sub-index: it belongs to the entry being read unless that one has its own already."""
+        if re.fullmatch(r"0[A-Fa-f]|[0-9][A-Fa-f]", clean(value.text)):
+            self.hex_singles = True
+        current = block.current
+        if current is not None and current.sub is None and not current.fields.keys() - {"access", "name"}:
+            current.sub = value
+            return
+        _start_entry(block, self.result, self.layout, self.hex_singles)
+        assert block.current is not None
+        block.current.sub = value
 
 
 def _name_line_allowed(block: _Block | None, parsed: tuple[str | None, list[tuple[str, Cell]], list[str]]) -> bool:

@@ -75,6 +75,36 @@ def cells_to_lines(text: str, result: ReadResult) -> list[Line]:
     return lines
 
 
+def _row_values(cells: list[tuple[int, str]], i: int, rest: str) -> tuple[str, str, str, int]:
+    """(description, access, mapped, position after them) of the row whose index cell is at i."""
+    collapsed = re.match(r"^(?P<desc>.*?)\s+(?P<access>R/W|R|W)\s+(?P<mapped>Y|N)$", rest)
+    if collapsed:
+        return collapsed.group("desc"), collapsed.group("access"), collapsed.group("mapped"), i + 1
+    access = mapped = ""
+    description = rest
+    j = i + 1
+    if not description and j < len(cells) and not _ACCESS.match(cells[j][1]):
+        description = cells[j][1]
+        j += 1
+    if j < len(cells) and (_ACCESS.match(cells[j][1]) or cells[j][1] == ""):
+        access = cells[j][1]
+        j += 1
+    if j < len(cells) and (_MAPPED.match(cells[j][1]) or (cells[j][1] == "" and not access)):
+        mapped = cells[j][1]
+        j += 1
+    return description, access, mapped, j
+
+
+def _continuation_end(cells: list[tuple[int, str]], j: int) -> int:
+    """Continuation cells run from j up to the next row's name: name, index, description, access, mapped."""
+    end = j
+    while end < len(cells) and not _INDEX.match(cells[end][1]):
+        if tuple(c for _, c in cells[end : end + 5]) == _HEADER or re.match(r"^Table \d", cells[end][1]):
+            break
+        end += 1
+    return end
+
+
 def _rows(cells: list[tuple[int, str]], i: int, lines: list[Line]) -> int:
     """Rows of the summary table from position i; returns where the table ends."""
     rows: list[tuple[int, list[str]]] = []
@@ -94,29 +124,8 @@ def _rows(cells: list[tuple[int, str]], i: int, lines: list[Line]) -> int:
         name = match.group("name")
         if not name and i > 0 and cells[i - 1][1] and not _MAPPED.match(cells[i - 1][1]):
             name = cells[i - 1][1]
-        rest = match.group("rest")
-        collapsed = re.match(r"^(?P<desc>.*?)\s+(?P<access>R/W|R|W)\s+(?P<mapped>Y|N)$", rest)
-        access = mapped = ""
-        description = rest
-        j = i + 1
-        if collapsed:
-            description, access, mapped = collapsed.group("desc"), collapsed.group("access"), collapsed.group("mapped")
-        else:
-            if not description and j < len(cells) and not _ACCESS.match(cells[j][1]):
-                description = cells[j][1]
-                j += 1
-            if j < len(cells) and (_ACCESS.match(cells[j][1]) or cells[j][1] == ""):
-                access = cells[j][1]
-                j += 1
-            if j < len(cells) and (_MAPPED.match(cells[j][1]) or (cells[j][1] == "" and not access)):
-                mapped = cells[j][1]
-                j += 1
-        # continuation cells up to the next row's name: name, index, description, access, mapped
-        end = j
-        while end < len(cells) and not _INDEX.match(cells[end][1]):
-            if tuple(c for _, c in cells[end : end + 5]) == _HEADER or re.match(r"^Table \d", cells[end][1]):
-                break
-            end += 1
+        description, access, mapped, j = _row_values(cells, i, match.group("rest"))
+        end = _continuation_end(cells, j)
         following = _INDEX.match(cells[end][1]) if end < len(cells) else None
         stop = end - 1 if following is not None and not following.group("name") else end
         continuation = [c for _, c in cells[j:stop]]

@@ -170,7 +170,6 @@ def table_entries(
     so a table continued after a page break keeps its index."""
     roles = table.roles
     col = {role: i for i, role in reversed(list(enumerate(roles))) if role is not None}
-    has_sub = "sub" in col
     indices_seen: set[str] = set()
     entries: list[RawEntry] = []
     current_index: Cell | None = None
@@ -190,7 +189,6 @@ def table_entries(
             return cells[i] if i is not None and i < len(cells) else ""
 
         index_text = get("index")
-        letter = get("letter")
         if index_text:
             spec = parse_index(index_text, bare=bare_index)
             if spec is None:
@@ -200,30 +198,11 @@ def table_entries(
         elif current_index is None:
             continue
         assert current_index is not None
-        entry = RawEntry(
-            file=result.file,
-            layout=layout,
-            kind=Kind.TABLE,
-            index=Cell(current_index.text, line.number),
-            hex_singles=hex_singles,
-            bare_index=bare_index,
-        )
-        if letter:
-            entry.add("letter", letter, line.number)
-        sub_text = get("sub")
-        if has_sub and sub_text:
-            entry.sub = Cell(sub_text, line.number)
-        for role, i in col.items():
-            if role in ("index", "sub", "letter") or i >= len(cells):
-                continue
-            if cells[i]:
-                entry.add(role, cells[i], line.number)
+        entry = _row_entry(line, cells, col, current_index, result, layout, hex_singles, bare_index)
         if empty_is_no and not get("pdo_mapping") and "pdo_mapping" in col:
             container = parse_object_code(get("object_code")) in _CONTAINERS or get("data_type").upper() in _MARKERS
             if not container:
                 entry.add("pdo_mapping", "No", line.number)
-        if not has_sub or not sub_text:
-            entry.object_level = True
         if pending_elision is not None and entries:
             entries.extend(_expand_elision(entries[-1], entry, pending_elision, hex_singles))
         pending_elision = None
@@ -235,6 +214,40 @@ def table_entries(
     for entry in entries:
         entry.kind = kind
     return entries
+
+
+def _row_entry(
+    line: Line,
+    cells: list[str],
+    col: dict[str, int],
+    current_index: Cell,
+    result: ReadResult,
+    layout: str,
+    hex_singles: bool,
+    bare_index: bool,
+) -> RawEntry:
+    """The entry one table row states: its index (the row's or the one above), sub-index and cells."""
+    entry = RawEntry(
+        file=result.file,
+        layout=layout,
+        kind=Kind.TABLE,
+        index=Cell(current_index.text, line.number),
+        hex_singles=hex_singles,
+        bare_index=bare_index,
+    )
+    letter = cells[col["letter"]] if "letter" in col and col["letter"] < len(cells) else ""
+    if letter:
+        entry.add("letter", letter, line.number)
+    sub_text = cells[col["sub"]] if "sub" in col and col["sub"] < len(cells) else ""
+    if sub_text:
+        entry.sub = Cell(sub_text, line.number)
+    for role, i in col.items():
+        if role in ("index", "sub", "letter") or i >= len(cells):
+            continue
+        if cells[i]:
+            entry.add(role, cells[i], line.number)
+    entry.object_level = not sub_text
+    return entry
 
 
 _CONTAINERS = (ObjectKind.ARRAY, ObjectKind.RECORD)

@@ -11,7 +11,7 @@ import re
 import unicodedata
 from dataclasses import dataclass, field
 
-from ..model import AccessType, NodeIdExpr, ObjectKind, standard_type
+from ..model import AccessType, DataType, NodeIdExpr, ObjectKind, standard_type
 
 # --------------------------------------------------------------------------- text clean-up
 
@@ -466,17 +466,9 @@ def parse_value(raw: str, type_index: int | None = None) -> ValueSpec | None:
     dtype = standard_type(type_index)
     if dtype is not None and dtype.kind.value in ("string", "unicode"):
         return ValueSpec(text)
-    node = re.fullmatch(
-        rf"(?:{_NODE_WORDS}\s*\+\s*(?P<a>.+?)|(?P<b>.+?)\s*\+\s*{_NODE_WORDS})\s*[\d²³¹]?\.?",
-        text,
-        flags=re.IGNORECASE,
-    )
-    if node:
-        base_text = node.group("a") or node.group("b") or ""
-        base_text = re.sub(r"^\d+\s*\((.+)\)$", r"\1", base_text.strip())  # 512 (200h)
-        base = parse_number(base_text)
-        if isinstance(base, int):
-            return ValueSpec(NodeIdExpr(offset=base, text=text), "node-relative")
+    node = _node_relative(text)
+    if node is not None:
+        return node
     if dtype is not None and dtype.kind.value == "octets":
         pairs = text.replace(" ", "")
         if re.fullmatch(r"(?:[0-9A-Fa-f]{2})+", pairs):
@@ -497,16 +489,38 @@ def parse_value(raw: str, type_index: int | None = None) -> ValueSpec | None:
         if dtype is not None and dtype.is_numeric:
             return None
         return ValueSpec(text) if dtype is None and re.search(r"[A-Za-z]", text) and len(text) < 60 else None
-    bits = dtype.bits if dtype is not None and dtype.kind.value == "signed" and dtype.bits else 0
+    if dtype is None:
+        return ValueSpec(number, note)
+    return _typed_number(number, head, note, dtype)
+
+
+def _node_relative(text: str) -> ValueSpec | None:
+    """`$NODEID + 0x180`, `0x180 + Node-ID`, `512 (200h) + node ID`: a value relative to the node-ID."""
+    node = re.fullmatch(
+        rf"(?:{_NODE_WORDS}\s*\+\s*(?P<a>.+?)|(?P<b>.+?)\s*\+\s*{_NODE_WORDS})\s*[\d²³¹]?\.?",
+        text,
+        flags=re.IGNORECASE,
+    )
+    if not node:
+        return None
+    base_text = node.group("a") or node.group("b") or ""
+    base_text = re.sub(r"^\d+\s*\((.+)\)$", r"\1", base_text.strip())  # 512 (200h)
+    base = parse_number(base_text)
+    return ValueSpec(NodeIdExpr(offset=base, text=text), "node-relative") if isinstance(base, int) else None
+
+
+def _typed_number(number: int | float, head: str, note: str, dtype: DataType) -> ValueSpec | None:
+    """The number as the data type holds it: two's complement, a stray 'h', a whole float."""
+    bits = dtype.bits if dtype.kind.value == "signed" and dtype.bits else 0
     if bits and isinstance(number, int) and (1 << (bits - 1)) <= number < (1 << bits) and _looks_hex(head):
         number -= 1 << bits  # a negative number printed in two's complement (`FFFFh` for INTEGER16)
         note = (note + "; " if note else "") + "two's complement"
-    if isinstance(number, int) and dtype is not None and dtype.int_range() is not None and _looks_hex(head):
+    if isinstance(number, int) and dtype.int_range() is not None and _looks_hex(head):
         low, high = dtype.int_range() or (0, 0)
         decimal = parse_number(head.rstrip("hH _"))
         if not low <= number <= high and isinstance(decimal, int) and low <= decimal <= high:
             number, note = decimal, (note + "; " if note else "") + "'h' on a decimal number"
-    if isinstance(number, float) and dtype is not None and dtype.is_integer:
+    if isinstance(number, float) and dtype.is_integer:
         if not number.is_integer():
             return None
         number = int(number)

@@ -145,27 +145,41 @@ def _object_table(out: Overrides, path: str, lines: dict[str, int], key: str, ta
     if not isinstance(subs, dict):
         return
     for sub_key, sub_table in subs.items():
-        sub_spec = parse_sub(str(sub_key))
-        if sub_spec is None or not isinstance(sub_table, dict):
-            out.diagnostics.append(_diag(path, line, "IMP003", f"[objects.{key!r}.sub.{sub_key!r}] is not a sub-index"))
+        _sub_table(out, path, lines, (key, where, line, reason), spec.indices(), sub_key, sub_table)
+
+
+def _sub_table(
+    out: Overrides,
+    path: str,
+    lines: dict[str, int],
+    owner: tuple[str, str, int, str],
+    indices: range,
+    sub_key: object,
+    sub_table: Any,
+) -> None:
+    """`[objects."INDEX".sub.SUB]`: overrides of entries, or their exclusion."""
+    key, where, line, reason = owner
+    sub_spec = parse_sub(str(sub_key))
+    if sub_spec is None or not isinstance(sub_table, dict):
+        out.diagnostics.append(_diag(path, line, "IMP003", f"[objects.{key!r}.sub.{sub_key!r}] is not a sub-index"))
+        return
+    sub_where = f"{where}.sub.{sub_key}".replace(" ", "")
+    sub_line = lines.get(sub_where, line)
+    sub_reason = str(sub_table.get("reason", reason))
+    if sub_table.get("exclude") is True:
+        for index in indices:
+            for sub in sub_spec.subs:
+                out.options.exclude_entries[(index, sub)] = sub_reason
+        return
+    for name, value in sub_table.items():
+        field_name = ALIASES.get(name.lower().replace("_", ""), name)
+        if name == "reason":
             continue
-        sub_where = f"{where}.sub.{sub_key}".replace(" ", "")
-        sub_line = lines.get(sub_where, line)
-        sub_reason = str(sub_table.get("reason", reason))
-        if sub_table.get("exclude") is True:
-            for index in spec.indices():
-                for sub in sub_spec.subs:
-                    out.options.exclude_entries[(index, sub)] = sub_reason
+        if field_name not in (*ENTRY_FIELDS, "name"):
+            out.diagnostics.append(_diag(path, lines.get(name, line), "IMP003", f"unknown override field {name!r}"))
             continue
-        for name, value in sub_table.items():
-            field_name = ALIASES.get(name.lower().replace("_", ""), name)
-            if name == "reason":
-                continue
-            if field_name not in (*ENTRY_FIELDS, "name"):
-                out.diagnostics.append(_diag(path, lines.get(name, line), "IMP003", f"unknown override field {name!r}"))
-                continue
-            field_line = lines.get(f"{sub_where}/{name}", sub_line)
-            _add(out, path, field_line, spec.indices(), list(sub_spec.subs), field_name, value, sub_reason)
+        field_line = lines.get(f"{sub_where}/{name}", sub_line)
+        _add(out, path, field_line, indices, list(sub_spec.subs), field_name, value, sub_reason)
 
 
 def _add(

@@ -23,8 +23,8 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 @click.option(
     "--format", "fmt", type=click.Choice(["text", "json", "sarif", "github"]), default="text", show_default=True
 )
-@click.option("--select", multiple=True, help="Only these codes or code prefixes (comma-separated).")
-@click.option("--ignore", multiple=True, help="Skip these codes or code prefixes (comma-separated).")
+@click.option("--select", multiple=True, help="Only these codes, code prefixes or families (comma-separated).")
+@click.option("--ignore", multiple=True, help="Skip these codes, code prefixes or families (comma-separated).")
 @click.option("--fix", is_flag=True, help="Apply safe fixes in place; only the touched lines change.")
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")

@@ -1,4 +1,4 @@
-"""`cantools-od rules`: the rule catalogue, or one rule explained."""
+"""`cantools-od rules`: the code registry, or one code explained."""
 
 from __future__ import annotations
 
@@ -12,20 +12,22 @@ from .common import EXIT_USAGE
 @click.command(name="rules")
 @click.argument("code", required=False)
 def command(code: str | None) -> None:
-    """List every rule, or explain CODE."""
-    from ..lint import RULES
-    from ..lint.catalog import load
+    """List every code cantools-od can print, or explain CODE (a code or its name)."""
+    from ..lint.codes import codes, find
 
-    load()
     if code is None:
-        for rule in sorted(RULES.values(), key=lambda r: r.code):
-            click.echo(f"{rule.code}  {rule.severity.value:<7}  {rule.family:<11}  {rule.summary}")
+        for found in codes().values():
+            click.echo(
+                f"{found.code}  {found.severity.value:<7}  {found.family:<11}  {found.name:<34}  {found.summary}"
+            )
         return
-    found = RULES.get(code.upper())
-    if found is None:
+    explained = find(code)
+    if explained is None:
         click.echo(f"error: no rule {code}; `cantools-od rules` lists them", err=True)
         sys.exit(EXIT_USAGE)
-    click.echo(f"{found.code}: {found.summary}\n\nseverity: {found.severity.value}   family: {found.family}\n")
-    click.echo(found.description)
-    if found.example:
-        click.echo("\nExample:\n\n" + "\n".join("    " + line for line in found.example.splitlines()))
+    rule = explained.rule
+    click.echo(f"{rule.code} ({explained.name}): {rule.summary}\n")
+    click.echo(f"severity: {rule.severity.value}   family: {explained.family}\n")
+    click.echo(rule.description)
+    if rule.example:
+        click.echo("\nExample:\n\n" + "\n".join("    " + line for line in rule.example.splitlines()))

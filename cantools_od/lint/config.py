@@ -1,7 +1,7 @@
 """Lint configuration: `[tool.cantools-od]` in pyproject.toml and command-line selections.
 
 [tool.cantools-od]
-select = ["EDS", "PDO"]            # codes or code prefixes; default: every rule
+select = ["EDS", "PDO", "cobid"]   # codes, code prefixes or family names; default: every rule
 ignore = ["EDS032"]
 per-file-ignores = { "vendor/*.eds" = ["EDS003", "COB006"] }
 """
@@ -13,6 +13,8 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .codes import matches
+
 
 @dataclass(frozen=True)
 class Selection:
@@ -22,11 +24,11 @@ class Selection:
     root: Path = Path()
 
     def enabled(self, code: str, file: str) -> bool:
-        if self.select and not any(code.startswith(prefix) for prefix in self.select):
+        if self.select and not any(matches(selector, code) for selector in self.select):
             return False
-        if any(code.startswith(prefix) for prefix in self.ignore):
+        if any(matches(selector, code) for selector in self.ignore):
             return False
-        return not any(code.startswith(prefix) for prefix in self._file_ignores(file))
+        return not any(matches(selector, code) for selector in self._file_ignores(file))
 
     def _file_ignores(self, file: str) -> tuple[str, ...]:
         if not self.per_file_ignores or not file:
@@ -80,5 +82,5 @@ def load_selection(start: Path) -> Selection:
 def _codes(table: dict[str, object], key: str, path: Path) -> tuple[str, ...]:
     value = table.get(key, [])
     if not isinstance(value, list) or not all(isinstance(code, str) for code in value):
-        raise ValueError(f"{path}: [tool.cantools-od] {key} must be a list of rule codes")
+        raise ValueError(f"{path}: [tool.cantools-od] {key} must be a list of rule codes, prefixes or families")
     return tuple(code.strip().upper() for code in value)

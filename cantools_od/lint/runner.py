@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..model import Device, Severity
-from . import catalog
+from .codes import load as load_families
 from .config import Selection
 from .reader import reader_fix
 from .rules import RULES, Context, Finding, LintOptions
@@ -14,7 +14,7 @@ _ORDER = {Severity.ERROR: 0, Severity.WARNING: 1, Severity.INFO: 2}
 
 def lint(device: Device, options: LintOptions | None = None, selection: Selection | None = None) -> list[Finding]:
     """Every enabled finding for one device, in file order."""
-    catalog.load()
+    load_families()
     options = options or LintOptions()
     selection = selection or Selection()
     file = device.source

@@ -133,7 +133,7 @@ def _keep(device: Device, section: ini.IniSection, report: Report) -> None:
 
 
 def expand_compact_pdo(device: Device) -> None:
-    """With CompactPDO≠0, the PDOs NrOfRXPDO/NrOfTXPDO count but the file omits (cia306.md §8.4)."""
+    """With CompactPDO≠0, the PDOs NrOfRXPDO/NrOfTXPDO count but the file omits (CiA 306 §4.6.3.4.1)."""
     info = device.device_info
     mask = info.compact_pdo or 0
     if not mask:

@@ -1,4 +1,4 @@
-"""Which tool's value conventions a file follows (cia306.md §16), and lely string quoting."""
+"""Which tool's value conventions a file follows (the dialects peer tools write), and lely string quoting."""
 
 from __future__ import annotations
 

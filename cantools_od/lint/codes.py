@@ -23,21 +23,30 @@ from .rules import RULES, Rule
 class Family:
     module: str  # the module of cantools_od.lint that declares the family's codes
     title: str
+    refs: str = ""  # the sections of the standards the family checks
 
 
 # Families in the order the linter runs them; each is imported explicitly by `load()`.
 FAMILIES: dict[str, Family] = {
-    "reader": Family("reader", "Reported while reading an EDS/DCF (CiA 306 syntax)"),
-    "syntax": Family("syntax", "File structure: sections, keys, lines (CiA 306)"),
-    "objects": Family("objects", "Object and sub-object sections (CiA 306)"),
-    "dcf": Family("dcf", "DCF additions and the module concept (CiA 306)"),
-    "objlists": Family("objlists", "[MandatoryObjects], [OptionalObjects], [ManufacturerObjects] (CiA 306)"),
-    "values": Family("values", "Values and limits against their data types (CiA 306, CiA 301)"),
-    "identity": Family("identity", "Mandatory objects and [DeviceInfo] against the dictionary (CiA 306, CiA 301)"),
-    "pdo": Family("pdo", "PDO records and mappings (CiA 301)"),
-    "cobid": Family("cobid", "COB-IDs and PDO communication parameters (CiA 301)"),
-    "network": Family("network", "Several nodes of one network (lint --network)"),
-    "portability": Family("portability", "What peer tools read differently (dialects)"),
+    "reader": Family("reader", "Reported while reading an EDS/DCF", "CiA 306 §4 (file structure, value syntax §4.3)"),
+    "syntax": Family("syntax", "File structure: sections, keys, lines", "CiA 306 §4, [Comments] §4.6.5"),
+    "objects": Family("objects", "Object and sub-object sections", "CiA 306 §4.6.3; CiA 301 data types"),
+    "dcf": Family("dcf", "DCF additions and the module concept", "CiA 306 §5, §6"),
+    "objlists": Family(
+        "objlists",
+        "[MandatoryObjects], [OptionalObjects], [ManufacturerObjects]",
+        "CiA 306 object lists; CiA 301 index areas",
+    ),
+    "values": Family(
+        "values", "Values and limits against their data types", "CiA 306 §4.3, §4.6.3; CiA 301 data types"
+    ),
+    "identity": Family(
+        "identity", "Mandatory objects and [DeviceInfo] against the dictionary", "CiA 306 [DeviceInfo]; CiA 301 §7.5.2"
+    ),
+    "pdo": Family("pdo", "PDO records and mappings", "CiA 301 §7.2.2, §7.4.8, §7.5.2.35-38; CiA 306 §4.6.3.4.1"),
+    "cobid": Family("cobid", "COB-IDs and PDO communication parameters", "CiA 301 §7.2, §7.3, §7.5.2.35/37"),
+    "network": Family("network", "Several nodes of one network (lint --network)", "CiA 301 §7.2, §7.3"),
+    "portability": Family("portability", "What peer tools read differently (dialects)", "CiA 306 §4"),
     "import": Family("tool", "Reported by import-table"),
     "gen": Family("tool", "Reported by gen"),
     "lint": Family("tool", "Reported by the linter about itself"),

@@ -1,4 +1,4 @@
-"""Rule family: dcf — DCF-only keys, Upload/DownloadFile, [DeviceComissioning] NodeID, modules (cia306.md §10-§11)."""
+"""Rule family: dcf — DCF-only keys, Upload/DownloadFile, [DeviceComissioning] NodeID, modules (CiA 306 §5, §6)."""
 
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ _DCF_KEYS = ("ParameterValue", "Denotation", "ParamRefd", "UploadFile", "Downloa
     "UploadFile/DownloadFile with a mismatching AccessType",
     """
 UploadFile receives the content of a DOMAIN read from the device, so the object should be `ro`;
-DownloadFile is written to the device, so the object should be `wo` (cia306.md §10). lely forces
+DownloadFile is written to the device, so the object should be `wo` (CiA 306 §5). lely forces
 these access types and warns.""",
     "[1F50]\nParameterName=Program\nObjectType=0x2\nAccessType=rw\nDownloadFile=firmware.bin",
 )
@@ -68,7 +68,7 @@ def file_domain(ctx: Context) -> Iterator[Finding]:
     "DCF-only key in an EDS",
     """
 ParameterValue, Denotation, ParamRefd, UploadFile and DownloadFile (and LastEDS in [FileInfo])
-describe one configured node and belong in a DCF (cia306.md §10). In an EDS, tools ignore them
+describe one configured node and belong in a DCF (CiA 306 §5). In an EDS, tools ignore them
 or take them for the device's defaults.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nParameterValue=100",
 )
@@ -159,7 +159,7 @@ def _listed(raw: RawSection) -> dict[str, str]:
     E,
     "Module sections inconsistent",
     """
-In the module concept (cia306.md §11) [SupportedModules] NrOfEntries counts the modules
+In the module concept (CiA 306 §6) [SupportedModules] NrOfEntries counts the modules
 M1..Mn, each with an [M<x>ModuleInfo]; [M<x>FixedObjects] and [M<x>SubExtends] count their
 numbered entries in NrOfEntries, and each listed index has its [M<x>Fixed<index>] or
 [M<x>SubExt<index>] section; [ConnectedModules] lists module numbers 1..n.""",

@@ -1,4 +1,7 @@
-"""Rule family: identity — mandatory objects, [DeviceInfo] against the object dictionary (cia306.md §4, §10)."""
+"""Rule family: identity — mandatory objects, [DeviceInfo] against the object dictionary.
+
+CiA 306 [DeviceInfo] and §5 (DCF); CiA 301 mandatory objects.
+"""
 
 from __future__ import annotations
 
@@ -54,7 +57,7 @@ def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     "[DeviceInfo] identity differs from 1018h",
     """
 VendorNumber, ProductNumber and RevisionNumber in [DeviceInfo] repeat the DefaultValue of the
-identity object 1018h sub-indices 1, 2 and 3 (cia306.md §4). Masters and configuration tools
+identity object 1018h sub-indices 1, 2 and 3 (CiA 306, [DeviceInfo]). Masters and configuration tools
 compare one or the other with the device; a mismatch (CANopenEditor #226: RevisionNumber=0
 while 1018h sub3 = 0x00010000) makes them reject the right device or accept the wrong one.""",
     "[DeviceInfo]\nRevisionNumber=0\n\n[1018sub3]\nParameterName=Revision number\nDataType=0x0007\n"
@@ -91,7 +94,7 @@ def _fix_identity(subindex: int, field: str) -> Callable[[Device], None]:
     "LSS_SerialNumber differs from 1018h sub4",
     """
 In a DCF, [DeviceComissioning] LSS_SerialNumber is the serial number of the configured device,
-which 1018h sub4 also states (cia306.md §10). LSS masters address the device by it; two
+which 1018h sub4 also states (CiA 306 §5). LSS masters address the device by it; two
 different numbers cannot both be right. Not checked when either side is missing or 0 (not
 configured).""",
     "[DeviceComissioning]\nLSS_SerialNumber=0x00000017\n\n[1018sub4]\nParameterName=Serial number\n"
@@ -141,7 +144,7 @@ def _fix_pdo_count(field: str, direction: str) -> Callable[[Device], None]:
     W,
     "Granularity 0 with writable PDO mapping",
     """
-`Granularity=0` states that the PDO mapping cannot be changed (cia306.md §4). Mapping objects
+`Granularity=0` states that the PDO mapping cannot be changed (CiA 306, [DeviceInfo]). Mapping objects
 (1600h-17FFh, 1A00h-1BFFh) with writable sub-objects say the opposite; configuration tools
 either refuse to remap or remap a device that rejects it.""",
     "[DeviceInfo]\nGranularity=0\n\n[1A00sub0]\nParameterName=Number of mapped objects\nDataType=0x0005\nAccessType=rw",
@@ -166,8 +169,8 @@ def static_mapping(ctx: Context) -> Iterator[Finding]:
     E,
     "Granularity above 64",
     """
-Granularity is the PDO mapping granularity in bits: 0 (mapping not modifiable) or 1..64 (cia306.md
-§4); a classic CAN frame holds 64 bits.""",
+Granularity is the PDO mapping granularity in bits: 0 (mapping not modifiable) or 1..64 (CiA 306,
+[DeviceInfo]); a classic CAN frame holds 64 bits.""",
     "[DeviceInfo]\nGranularity=128",
 )
 def granularity_range(ctx: Context) -> Iterator[Finding]:

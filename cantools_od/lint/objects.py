@@ -1,4 +1,7 @@
-"""Rule family: objects — obligation matrix, sub-objects, sub-index 0 and FFh, data types (cia306.md §7-§8, §12-§13)."""
+"""Rule family: objects — obligation matrix, sub-objects, sub-index 0 and FFh, data types.
+
+CiA 306 §4.6.3; CiA 301 data types and index areas.
+"""
 
 from __future__ import annotations
 
@@ -47,7 +50,7 @@ def _forbidden(obj: Object, sub: bool) -> tuple[str, ...]:
     E,
     "Mandatory key missing",
     """
-The obligation matrix of CiA 306 (cia306.md §7.3) makes ParameterName mandatory everywhere;
+The obligation matrix of CiA 306 (object descriptions, §4.6.3) makes ParameterName mandatory everywhere;
 DataType and AccessType for VAR, DEFTYPE, sub-objects and CompactSubObj objects; SubNumber for
 ARRAY, RECORD and DEFSTRUCT without CompactSubObj. A missing key equals an empty one. Tools
 crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
@@ -68,7 +71,7 @@ def missing_keys(ctx: Context) -> Iterator[Finding]:
     E,
     "Key not allowed for this object type",
     """
-Per the obligation matrix (cia306.md §7.3) ARRAY, RECORD and DEFSTRUCT objects without
+Per the obligation matrix of CiA 306 (§4.6.3) ARRAY, RECORD and DEFSTRUCT objects without
 CompactSubObj describe their values in sub-objects and carry no DataType, AccessType,
 DefaultValue, PDOMapping or limits; DOMAIN objects have no PDOMapping, SubNumber or limits; VAR
 and sub-objects have no SubNumber. Tools disagree about what such keys mean.""",
@@ -127,7 +130,7 @@ def _fix_sub_number(index: int) -> Callable[[Device], None]:
     E,
     "CompactSubObj misused",
     """
-CompactSubObj (cia306.md §8.1) describes the sub-objects of an ARRAY (lely: also RECORD)
+CompactSubObj (CiA 306 §4.6.3.4.2) describes the sub-objects of an ARRAY (lely: also RECORD)
 implicitly: sub0 plus subs 1..n copied from the object. It is not allowed on VAR, DOMAIN or
 sub-objects, must be 1..254, and excludes both a non-zero SubNumber and `[<index>sub<n>]`
 sections, which would describe the same sub-objects twice.""",
@@ -162,7 +165,7 @@ def compact_misuse(ctx: Context) -> Iterator[Finding]:
     E,
     "ObjFlags reserved bits set",
     """
-ObjFlags (cia306.md §7.5) defines bit 0 (refuse write on download) and bit 1 (refuse read on
+ObjFlags (CiA 306 §4.6.3.3) defines bit 0 (refuse write on download) and bit 1 (refuse read on
 scan); bits 2-31 are reserved and must be 0. lely ORs ObjFlags into its own flag word, where
 reserved bits switch on lely-internal behaviour.""",
     "[2000]\nParameterName=Setpoint\nDataType=0x0006\nAccessType=rw\nObjFlags=0x4",
@@ -328,7 +331,7 @@ def undefined_types(ctx: Context) -> Iterator[Finding]:
     "Object type does not fit the data-type index area",
     """
 Indices 0001h-0FFFh hold data types: DEFTYPE and DEFSTRUCT objects belong there and nowhere
-else, and nothing else belongs there (cia306.md §13). Index 0000h is not used.""",
+else, and nothing else belongs there (CiA 301, object dictionary index areas). Index 0000h is not used.""",
     "[2000]\nParameterName=My type\nObjectType=0x5\nDataType=0x0007\nAccessType=ro",
 )
 def type_area(ctx: Context) -> Iterator[Finding]:

@@ -1,4 +1,4 @@
-"""Rule family: object lists — [MandatoryObjects], [OptionalObjects], [ManufacturerObjects] (cia306.md §6)."""
+"""Rule family: object lists — [MandatoryObjects], [OptionalObjects], [ManufacturerObjects] (CiA 306, object lists)."""
 
 from __future__ import annotations
 
@@ -183,7 +183,7 @@ def mandatory_list(ctx: Context) -> Iterator[Finding]:
     "Object listed outside its index area",
     """
 [ManufacturerObjects] holds the manufacturer-specific area 2000h-5FFFh and [OptionalObjects] the
-communication and device-profile areas (cia306.md §13); C000h-FFFFh is reserved. Real devices
+communication and device-profile areas (CiA 301, object dictionary index areas); C000h-FFFFh is reserved. Real devices
 put manufacturer objects into the profile area (e.g. 7001h), so this is a warning: check whether
 the object is misplaced or its index is.""",
     "[OptionalObjects]\nSupportedObjects=1\n1=0x2000",
@@ -278,7 +278,7 @@ def _fix_duplicate(index: int) -> Callable[[Device], None]:
     E,
     "SupportedObjects does not match the list",
     """
-SupportedObjects gives the number of entries of an object list (cia306.md §6); tools read
+SupportedObjects gives the number of entries of an object list (CiA 306, object lists); tools read
 exactly that many entries, so a wrong count drops objects or fails on a missing entry.""",
     "[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n2=0x2001",
 )
@@ -318,7 +318,7 @@ def _fix_count(name: str) -> Callable[[Device], None]:
     "Object list not numbered 1..n",
     """
 The entries of an object list are keyed 1, 2, ... n in decimal, without gaps, leading zeros or
-other keys (cia306.md §6). Tools read keys 1..SupportedObjects and miss the others.""",
+other keys (CiA 306, object lists). Tools read keys 1..SupportedObjects and miss the others.""",
     "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n3=0x1200",
 )
 def numbering(ctx: Context) -> Iterator[Finding]:

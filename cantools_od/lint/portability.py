@@ -1,4 +1,4 @@
-"""Rule family: portability — what python-canopen, lely and CANopenNode read differently (cia306.md §16, peers.md).
+"""Rule family: portability — what python-canopen, lely and CANopenNode read differently (dialects of peer tools).
 
 These rules find nothing wrong by CiA 306; they point at content that a peer tool drops, misreads
 or rejects, so that a file meant for those tools can be adjusted.

@@ -95,31 +95,60 @@ class Rule:
     example: str
     family: str
     check: Check | None  # None: reported while reading (see the reader codes)
+    fixed: str = ""  # the example corrected: it does not trigger the rule
+    fix_safety: str = ""  # what `--fix` does about it, and whether that is safe
+    refs: str = ""  # the standard's sections, beyond the family's
 
 
 RULES: dict[str, Rule] = {}
 
 
-def rule(code: str, severity: Severity, summary: str, description: str, example: str = "") -> Callable[[Check], Check]:
-    """Register a check function under a code. The family is the module's last name part."""
+def rule(
+    code: str,
+    severity: Severity,
+    summary: str,
+    description: str,
+    example: str = "",
+    *,
+    fixed: str = "",
+    fix_safety: str = "",
+    refs: str = "",
+) -> Callable[[Check], Check]:
+    """Register a check function under a code. The family is the module's last name part.
+
+    `description` says why the rule exists; `example` is a fragment of an EDS that triggers it,
+    `fixed` the same fragment corrected (the documentation runs both)."""
 
     def register(check: Check) -> Check:
         family = check.__module__.rsplit(".", 1)[-1]
-        if code in RULES:
-            raise ValueError(f"rule {code} declared twice")
-        RULES[code] = Rule(code, severity, summary, description.strip(), example.strip(), family, check)
+        _add(Rule(code, severity, summary, description.strip(), example.strip(), family, check, fixed.strip(),
+                  fix_safety.strip(), refs.strip()))  # fmt: skip
         return check
 
     return register
 
 
 def declare(
-    code: str, severity: Severity, summary: str, description: str, example: str = "", family: str = "reader"
+    code: str,
+    severity: Severity,
+    summary: str,
+    description: str,
+    example: str = "",
+    family: str = "reader",
+    *,
+    fixed: str = "",
+    fix_safety: str = "",
+    refs: str = "",
 ) -> None:
     """Document a code that the reader reports, so `rules` lists it and `--select` knows it."""
-    if code in RULES:
-        raise ValueError(f"rule {code} declared twice")
-    RULES[code] = Rule(code, severity, summary, description.strip(), example.strip(), family, None)
+    _add(Rule(code, severity, summary, description.strip(), example.strip(), family, None, fixed.strip(),
+              fix_safety.strip(), refs.strip()))  # fmt: skip
+
+
+def _add(declared: Rule) -> None:
+    if declared.code in RULES:
+        raise ValueError(f"rule {declared.code} declared twice")
+    RULES[declared.code] = declared
 
 
 def find(code: str) -> Rule:

@@ -1,4 +1,7 @@
-"""Rule family: syntax — lines, sections, keys, dates, EDSVersion and [Comments] (cia306.md §1-§5, §9)."""
+"""Rule family: syntax — lines, sections, keys, dates, EDSVersion and [Comments].
+
+CiA 306 §4: file structure, [FileInfo], [DeviceInfo]; [Comments] §4.6.5.
+"""
 
 from __future__ import annotations
 
@@ -121,7 +124,7 @@ def unknown_sections(ctx: Context) -> Iterator[Finding]:
         yield ctx.report("EDS004", message, ctx.at(raw))
     for raw in ctx.device.module_sections:
         if not _MODULE.match(raw.name):
-            yield ctx.report("EDS004", f"[{raw.name}]: not a module-concept section name (cia306.md §11)", ctx.at(raw))
+            yield ctx.report("EDS004", f"[{raw.name}]: not a module-concept section name (CiA 306 §6)", ctx.at(raw))
 
 
 @rule(
@@ -147,7 +150,7 @@ def long_names(ctx: Context) -> Iterator[Finding]:
     E,
     "Mandatory section missing",
     """
-Every EDS and DCF has [FileInfo], [DeviceInfo] and [DummyUsage] (cia306.md §2). Tools read the
+Every EDS and DCF has [FileInfo], [DeviceInfo] and [DummyUsage] (CiA 306 §4). Tools read the
 vendor and product identity, supported baud rates and PDO counts from [DeviceInfo]. The object
 lists are checked by EDS019.""",
     "; no [DeviceInfo] section in the file\n[FileInfo]\nFileName=device.eds",

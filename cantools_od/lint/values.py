@@ -1,4 +1,7 @@
-"""Rule family: values — DefaultValue, ParameterValue and limits against their data type (cia306.md §7.6, §8.3)."""
+"""Rule family: values — DefaultValue, ParameterValue and limits against their data type.
+
+CiA 306 §4.6.3, §5.3.3.2; CiA 301 data types.
+"""
 
 from __future__ import annotations
 
@@ -144,7 +147,7 @@ def _range_problem(dtype: DataType, value: Value, nids: tuple[int, ...]) -> str 
     "Limits on a non-numeric data type",
     """
 LowLimit and HighLimit bound numeric values (integers, BOOLEAN, REAL); strings, OCTET_STRING,
-DOMAIN and the TIME types have no order a limit could use (cia306.md §7.6).""",
+DOMAIN and the TIME types have no order a limit could use (CiA 306, LowLimit/HighLimit).""",
     "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nLowLimit=0",
 )
 def non_numeric_limits(ctx: Context) -> Iterator[Finding]:
@@ -227,7 +230,7 @@ def _outside(ctx: Context, entry: Entry, key: str, value: Value) -> str | None:
     E,
     "DefaultValue outside the limits",
     """
-The DefaultValue lies within LowLimit..HighLimit (cia306.md §7.6); a device cannot start with a
+The DefaultValue lies within LowLimit..HighLimit (CiA 306, LowLimit/HighLimit); a device cannot start with a
 value it would refuse to be written. `$NODEID` defaults are checked for node-IDs 1..127.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nDefaultValue=5000\nHighLimit=3000",
 )
@@ -265,7 +268,7 @@ def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
     W,
     "$NODEID in a value that is not an integer",
     """
-`$NODEID` formulas are defined for integer entries only (cia306.md §1.1). In a VISIBLE_STRING
+`$NODEID` formulas are defined for integer entries only (CiA 306 §4.3). In a VISIBLE_STRING
 the text stays as it is, which is rarely what was meant: usually the DataType is wrong.""",
     "[2000]\nParameterName=COB-ID\nDataType=0x0009\nAccessType=ro\nDefaultValue=$NODEID+0x180",
 )

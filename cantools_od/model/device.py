@@ -14,7 +14,7 @@ from .values import NodeIdExpr, Value
 
 
 class Dialect(StrEnum):
-    """The value conventions a file follows (cia306.md §16)."""
+    """The value conventions a file follows (the dialects peer tools write)."""
 
     CIA306 = "cia306"
     LELY = "lely"

@@ -1,7 +1,7 @@
 """PDOs for the Rust target: a struct per PDO with `pack`/`unpack` over its bit layout.
 
-Entries are packed from bit 0 of byte 0 in mapping order, each value little-endian (pdo-rules.md
-§6); any offset and length work. Dummy entries have no field and are sent as zeros.
+Entries are packed from bit 0 of byte 0 in mapping order, each value little-endian (CiA 301
+PDO mapping); any offset and length work. Dummy entries have no field and are sent as zeros.
 """
 
 from __future__ import annotations

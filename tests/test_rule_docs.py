@@ -1,0 +1,75 @@
+"""Rule documentation as a product: docs/rules.md is generated and current, every rule example runs.
+
+A rule's failing example, framed into a minimal valid EDS (cantools_od/lint/examples.py), must
+trigger exactly its rule, at a line of the example; its fixed example must lint clean.
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from cantools_od.lint.codes import codes
+from cantools_od.lint.examples import fragment_line, run
+from cantools_od.lint.ruledocs import markdown
+
+from support import ROOT
+
+TOOL_FAMILIES = ("import", "gen", "lint")  # codes of other commands: their examples are those commands' inputs
+SHARED_DOCS = re.compile(r"\b(?:cia306|pdo-rules|vendor-manuals|peers)\.md\b")
+
+RULE_CODES = sorted(code for code, c in codes().items() if c.family not in TOOL_FAMILIES)
+# Examples written before examples were run: informal fragments that do not yet trigger exactly their rule
+# inside the frame. The test below fails as soon as one of them does, so that the list only shrinks.
+PENDING = {
+    *("COB001", "COB004", "COB005", "COB006", "COB007", "COB009", "COB010", "COB011", "DIA003", "DIA004", "DIA005"),
+    *("DIA006", "DIA007", "DIA008", "DIA009", "DIA011", "DIA014", "DIA018", "EDS001", "EDS002", "EDS003", "EDS005"),
+    *("EDS006", "EDS009", "EDS011", "EDS013", "EDS014", "EDS015", "EDS016", "EDS017", "EDS018", "EDS019", "EDS021"),
+    *("EDS024", "EDS025", "EDS026", "EDS027", "EDS028", "EDS030", "EDS032", "EDS033", "EDS040", "EDS041", "EDS042"),
+    *("EDS045", "EDS046", "EDS050", "EDS051", "EDS061", "EDS070", "EDS081", "EDS100", "EDS101", "EDS102", "PDO001"),
+    *("PDO002", "PDO010", "PDO011", "PDO012", "PDO013", "PDO020", "PDO021", "PDO023", "PDO024", "PDO032", "PDO033"),
+    *("PDO040", "PDO041", "PDO042", "PDO043", "PDO044", "PDO045", "PDO046", "PDO048", "PDO049", "PDO050", "PDO051"),
+    *("PDO052", "PDO053", "PDO054", "PDO060", "PDO062", "PDO064"),
+}
+
+
+def test_rules_md_is_current() -> None:
+    written = (ROOT / "docs" / "rules.md").read_text(encoding="utf-8")
+    assert written == markdown(), "docs/rules.md is stale: python -m cantools_od.lint.ruledocs > docs/rules.md"
+
+
+def test_rule_texts_cite_standards_not_our_notes() -> None:
+    for code, found in codes().items():
+        rule = found.rule
+        text = "\n".join((rule.summary, rule.description, rule.example, rule.fixed, rule.fix_safety, rule.refs))
+        assert not SHARED_DOCS.search(text), f"{code} cites a document users do not have"
+
+
+def _triggers_exactly(code: str, example: str) -> bool:
+    text, findings = run(example)
+    mine = [f for f in findings if f.code == code]
+    inside = all(fragment_line(example, text, f.location.line) is not None for f in mine)
+    return bool(mine) and inside and all(f.code == code for f in findings)
+
+
+@pytest.mark.parametrize("code", [c for c in RULE_CODES if c not in PENDING])
+def test_failing_example_triggers_exactly_its_rule(code: str) -> None:
+    example = codes()[code].rule.example
+    assert example, f"{code} has no example"
+    text, findings = run(example)
+    mine = [f for f in findings if f.code == code]
+    assert mine, f"{code}: its example does not trigger it"
+    assert all(fragment_line(example, text, f.location.line) is not None for f in mine), "reported outside the example"
+    assert [f.format() for f in findings if f.code != code] == []
+
+
+@pytest.mark.parametrize("code", sorted(PENDING))
+def test_pending_examples_are_still_pending(code: str) -> None:
+    assert not _triggers_exactly(code, codes()[code].rule.example), f"{code} runs now: remove it from PENDING"
+
+
+@pytest.mark.parametrize("code", [c for c in RULE_CODES if codes()[c].rule.fixed])
+def test_fixed_example_is_clean(code: str) -> None:
+    _, findings = run(codes()[code].rule.fixed)
+    assert [f.format() for f in findings] == []

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -30,6 +31,20 @@ def corpus_file(name: str) -> Path:
     if not path.is_file():
         pytest.skip(f"{name} is not in ../shared/eds-corpus")
     return path
+
+
+UPDATE_GOLDEN = os.environ.get("UPDATE_GOLDEN") == "1"  # the one switch: UPDATE_GOLDEN=1 rewrites every golden file
+
+
+def assert_golden(golden: Path, text: str) -> None:
+    """The generated `text` is the golden file (C, Rust, Python, Markdown alike); UPDATE_GOLDEN=1 rewrites it first."""
+    if UPDATE_GOLDEN:
+        golden.parent.mkdir(parents=True, exist_ok=True)
+        golden.write_text(text, encoding="utf-8")
+    assert golden.is_file(), f"{golden} is missing; run with UPDATE_GOLDEN=1 to write it and review the diff"
+    assert golden.read_text(encoding="utf-8") == text, (
+        f"{golden} differs from the output; if intended, run with UPDATE_GOLDEN=1 and review the diff"
+    )
 
 
 def cli_command() -> list[str]:

@@ -14,6 +14,8 @@ and to talk to a node. It holds:
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
+from importlib import resources
 
 from ..interop import OdVariable, od_objects
 from ..model import AccessType, Device, NodeIdExpr, ValueKind, standard_type
@@ -75,8 +77,19 @@ class Property:
         return py_def(self.name, ["self", f"value: {self.pytype}"], "None", 4)
 
 
+_MARKER = "# --- RUNTIME:"
+
+
+@cache
+def runtime() -> str:
+    """The runtime's source below its marker (pyruntime.py), without its final newline."""
+    source = resources.files(__package__).joinpath("pyruntime.py").read_text(encoding="utf-8")
+    start = source.index("\n", source.index(_MARKER)) + 1
+    return source[start:].removesuffix("\n")
+
+
 def render(view: DeviceView) -> dict[str, str]:
-    text = environment().get_template("python/module.py.j2").render(m=_module(view))
+    text = environment().get_template("python/module.py.j2").render(m=_module(view), runtime=runtime())
     return {f"{view.name}.py": text}
 
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
 import subprocess
@@ -20,7 +19,6 @@ from cantools_od.views.codegen import DeviceView, build_view
 import support
 
 GOLDEN = Path(__file__).resolve().parent / "golden" / "c"
-UPDATE_GOLDEN = os.environ.get("UPDATE_GOLDEN") == "1"
 C_FLAGS = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 CXX_FLAGS = ["-std=c++11", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 

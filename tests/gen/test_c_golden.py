@@ -10,7 +10,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from ckit import EXAMPLES, GOLDEN, UPDATE_GOLDEN, compile_checks, generate, tool, write, write_odd_eds
+from ckit import EXAMPLES, GOLDEN, compile_checks, generate, tool, write, write_odd_eds
+
+from support import assert_golden
 
 # golden name → (input, node-ID, CAN FD)
 CASES = {
@@ -30,10 +32,8 @@ def test_output_matches_golden_files(name: str, tmp_path: Path) -> None:
     _, node_id, can_fd = CASES[name]
     files = generate(source(name, tmp_path), name, node_id, can_fd)
     assert sorted(files) == [f"{name}.c", f"{name}.h"]
-    if UPDATE_GOLDEN:
-        write(GOLDEN, files)
-    drifted = [f for f, text in files.items() if not (GOLDEN / f).is_file() or (GOLDEN / f).read_text("utf-8") != text]
-    assert not drifted, f"{drifted} differ from {GOLDEN}; if intended, run with UPDATE_GOLDEN=1 and review the diff"
+    for filename, text in files.items():
+        assert_golden(GOLDEN / filename, text)
 
 
 @pytest.mark.parametrize("name", sorted(CASES))

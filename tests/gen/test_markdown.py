@@ -3,7 +3,6 @@
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
 from pathlib import Path
@@ -32,7 +31,7 @@ from pykit import (
 
 from cantools_od.render.escape import markdown_cell, markdown_text
 
-from support import EXAMPLES
+from support import EXAMPLES, assert_golden
 
 pytest.importorskip("markdown_it", reason="markdown-it-py is in the test extras")
 
@@ -65,10 +64,7 @@ def test_markdown_golden(name: str, tmp_path: Path) -> None:
     shutil.copy(EXAMPLES / name, copy)
     assert generate(copy, "markdown", stem) == text
     golden = GOLDEN / "markdown" / f"{stem}.md"
-    if os.environ.get("UPDATE_GOLDEN"):
-        golden.parent.mkdir(parents=True, exist_ok=True)
-        golden.write_text(text, encoding="utf-8")
-    assert golden.read_text(encoding="utf-8") == text, "run with UPDATE_GOLDEN=1 to accept the new output"
+    assert_golden(golden, text)
 
 
 @pytest.mark.parametrize("name", EXAMPLE_FILES)

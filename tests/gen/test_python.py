@@ -6,7 +6,6 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
-import os
 import random
 import shutil
 import subprocess
@@ -35,7 +34,7 @@ from pykit import (
 
 from cantools_od import load, to_canopen
 
-from support import EXAMPLES, corpus_files
+from support import EXAMPLES, assert_golden, corpus_files
 
 EXAMPLE_FILES = ["io_device.eds", "cia402_drive.eds"]
 
@@ -73,10 +72,7 @@ def test_python_golden(name: str, tmp_path: Path) -> None:
     shutil.copy(EXAMPLES / name, copy)
     assert generate(copy, "python", stem) == text
     golden = GOLDEN / "python" / f"{stem}.py"
-    if os.environ.get("UPDATE_GOLDEN"):
-        golden.parent.mkdir(parents=True, exist_ok=True)
-        golden.write_text(text, encoding="utf-8")
-    assert golden.read_text(encoding="utf-8") == text, "run with UPDATE_GOLDEN=1 to accept the new output"
+    assert_golden(golden, text)
 
 
 def test_python_cli_writes_module(tmp_path: Path) -> None:

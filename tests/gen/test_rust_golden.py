@@ -7,7 +7,6 @@ When a change of the output is intended, regenerate the golden files and review 
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import pytest
@@ -16,8 +15,9 @@ from rustkit import EXAMPLES, eds_text, render_rust, var
 
 from cantools_od.cli.gen import command
 
+from support import assert_golden
+
 GOLDEN = Path(__file__).resolve().parent / "golden" / "rust"
-UPDATE_GOLDEN = bool(os.environ.get("UPDATE_GOLDEN"))
 
 # golden file → (example, node-ID)
 CASES = {
@@ -37,12 +37,7 @@ def test_output_matches_golden_file(name: str) -> None:
     example, node_id = CASES[name]
     _, text = render_rust(EXAMPLES / example, name, node_id)
     golden = GOLDEN / f"{name}.rs"
-    if UPDATE_GOLDEN:
-        GOLDEN.mkdir(parents=True, exist_ok=True)
-        golden.write_text(text, encoding="utf-8")
-    assert golden.is_file() and golden.read_text("utf-8") == text, (
-        f"{golden} differs from the output; if intended, run with UPDATE_GOLDEN=1 and review the diff"
-    )
+    assert_golden(golden, text)
 
 
 @pytest.mark.parametrize("name", sorted(CASES))

@@ -1,3 +1,19 @@
+"""The runtime of every generated Python module: SDO access, value packing and PDO layouts.
+
+`gen -t python` copies everything below the RUNTIME marker verbatim into each module it writes
+(templates/python/module.py.j2 places it), so this one file is what ruff and mypy check. The
+imports above the marker are the ones the generated module makes itself.
+"""
+
+from __future__ import annotations
+
+import struct
+from typing import Final, NamedTuple, Protocol, runtime_checkable
+
+# Defined by each generated module after the runtime: every variable by (index, sub-index).
+_BY_ADDRESS: dict[tuple[int, int], _Var] = {}
+
+# --- RUNTIME: below this line, copied into each generated module -------------------------------------------
 # CiA 301 data types (the indices python-canopen's objectdictionary.datatypes has).
 BOOLEAN: Final = 0x0001
 INTEGER8: Final = 0x0002

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import pytest
-from pdokit import comm, eds, mapping, record, var
+from lintkit import comm, eds, mapping, record, var
 
 from support import cli_command
 

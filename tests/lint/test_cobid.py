@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import pytest
-from pdokit import VALUE_COLUMN, at, comm, eds, findings, mapping, record, section, var, where
+from lintkit import VALUE_COLUMN, at, comm, eds, mapping, record, section, var, where
+from lintkit import code_findings as findings
 
 from cantools_od.lint import LintOptions
 from cantools_od.model import Severity

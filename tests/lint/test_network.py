@@ -6,7 +6,7 @@ import os
 import subprocess
 from pathlib import Path
 
-from pdokit import VALUE_COLUMN, at, comm, dcf, load, mapping, section, var, where
+from lintkit import VALUE_COLUMN, at, comm, dcf, load, mapping, section, var, where
 
 from cantools_od.lint import Finding, LintOptions
 from cantools_od.lint.network import lint_network

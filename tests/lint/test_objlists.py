@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-import pytest
-from lintkit import BASE, device, diff, findings, fix, line_of, messages, replace, run
+from lintkit import BASE, device, diff, findings, fix, line_of, messages, replace, run, table_tests
 
 from cantools_od.lint import lint
 from cantools_od.lint.rules import RULES
@@ -57,25 +56,9 @@ CLEAN = [
 ]
 
 
-@pytest.mark.parametrize(("code", "text", "expected"), FOUND)
-def test_finding_location(code: str, text: str, expected: list[tuple[int, int]]) -> None:
-    assert findings(text, code) == expected
-
-
-@pytest.mark.parametrize(("code", "text"), CLEAN)
-def test_no_finding(code: str, text: str) -> None:
-    assert findings(text, code) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_on_a_valid_file(code: str) -> None:
-    assert findings(BASE, code) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_documented(code: str) -> None:
-    rule = RULES[code]
-    assert rule.family == "objlists" and rule.summary and rule.description and rule.example
+test_finding_location, test_no_finding, test_rule_on_a_valid_file, test_rule_documented = table_tests(
+    "objlists", FOUND, CLEAN, CODES
+)
 
 
 def test_severities() -> None:

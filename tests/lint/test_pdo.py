@@ -5,7 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from pdokit import VALUE_COLUMN, at, comm, eds, findings, load, mapping, record, section, var, where
+from lintkit import VALUE_COLUMN, at, comm, eds, load, mapping, record, section, var, where
+from lintkit import code_findings as findings
 
 from cantools_od import dumps
 from cantools_od import load as load_file

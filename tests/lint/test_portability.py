@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from lintkit import BASE, findings, messages
+from lintkit import findings, messages, table_tests
 
 from cantools_od.lint.rules import RULES
 
@@ -73,26 +73,14 @@ CLEAN = [
 CODES = sorted({code for code, _, _ in FOUND})
 
 
-@pytest.mark.parametrize(("code", "text", "expected"), FOUND)
-def test_finding_location(code: str, text: str, expected: list[tuple[int, int]]) -> None:
-    assert findings(text, code) == expected
-
-
-@pytest.mark.parametrize(("code", "text"), CLEAN)
-def test_no_finding(code: str, text: str) -> None:
-    assert findings(text, code) == []
+test_finding_location, test_no_finding, test_rule_on_a_valid_file, test_rule_documented = table_tests(
+    "portability", FOUND, CLEAN, CODES
+)
 
 
 @pytest.mark.parametrize("code", CODES)
-def test_rule_on_a_valid_file(code: str) -> None:
-    assert findings(BASE, code) == []  # BASE's CompactSubObj ARRAY is portable
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_documented(code: str) -> None:
-    rule = RULES[code]
-    assert rule.family == "portability" and rule.summary and rule.description and rule.example
-    assert rule.severity.value in ("warning", "info")  # portability is never an error
+def test_portability_is_never_an_error(code: str) -> None:
+    assert RULES[code].severity.value in ("warning", "info")
 
 
 def test_messages() -> None:

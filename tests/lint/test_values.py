@@ -2,10 +2,7 @@
 
 from __future__ import annotations
 
-import pytest
-from lintkit import BASE, findings, messages
-
-from cantools_od.lint.rules import RULES
+from lintkit import BASE, findings, messages, table_tests
 
 CODES = ("EDS031", "EDS034", "EDS035", "EDS036", "EDS037", "EDS038", "EDS039", "EDS061")
 NODE = "[DeviceComissioning]\nNodeID=5\n"
@@ -75,27 +72,9 @@ CLEAN = [
 ]
 
 
-@pytest.mark.parametrize(("code", "text", "source", "node_id", "expected"), FOUND)
-def test_finding_location(
-    code: str, text: str, source: str, node_id: int | None, expected: list[tuple[int, int]]
-) -> None:
-    assert findings(text, code, source, node_id) == expected
-
-
-@pytest.mark.parametrize(("code", "text", "source", "node_id"), CLEAN)
-def test_no_finding(code: str, text: str, source: str, node_id: int | None) -> None:
-    assert findings(text, code, source, node_id) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_on_a_valid_file(code: str) -> None:
-    assert findings(BASE, code) == []
-
-
-@pytest.mark.parametrize("code", CODES)
-def test_rule_documented(code: str) -> None:
-    rule = RULES[code]
-    assert rule.family == "values" and rule.summary and rule.description and rule.example
+test_finding_location, test_no_finding, test_rule_on_a_valid_file, test_rule_documented = table_tests(
+    "values", FOUND, CLEAN, CODES
+)
 
 
 def test_messages() -> None:

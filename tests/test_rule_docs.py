@@ -23,14 +23,11 @@ RULE_CODES = sorted(code for code, c in codes().items() if c.family not in TOOL_
 # Examples written before examples were run: informal fragments that do not yet trigger exactly their rule
 # inside the frame. The test below fails as soon as one of them does, so that the list only shrinks.
 PENDING = {
-    *("COB001", "COB004", "COB005", "COB006", "COB007", "COB009", "COB010", "COB011", "DIA003", "DIA004", "DIA005"),
-    *("DIA006", "DIA007", "DIA008", "DIA009", "DIA011", "DIA014", "DIA018", "EDS001", "EDS002", "EDS003", "EDS005"),
-    *("EDS006", "EDS009", "EDS011", "EDS013", "EDS014", "EDS015", "EDS016", "EDS017", "EDS018", "EDS019", "EDS021"),
-    *("EDS024", "EDS025", "EDS026", "EDS027", "EDS028", "EDS030", "EDS032", "EDS033", "EDS040", "EDS041", "EDS042"),
-    *("EDS045", "EDS046", "EDS050", "EDS051", "EDS061", "EDS070", "EDS081", "EDS100", "EDS101", "EDS102", "PDO001"),
-    *("PDO002", "PDO010", "PDO011", "PDO012", "PDO013", "PDO020", "PDO021", "PDO023", "PDO024", "PDO032", "PDO033"),
-    *("PDO040", "PDO041", "PDO042", "PDO043", "PDO044", "PDO045", "PDO046", "PDO048", "PDO049", "PDO050", "PDO051"),
-    *("PDO052", "PDO053", "PDO054", "PDO060", "PDO062", "PDO064"),
+    *("COB011", "DIA003", "DIA004", "DIA005", "DIA006", "DIA007", "DIA008", "DIA009", "DIA011", "DIA014", "DIA018"),
+    *("EDS001", "EDS002", "EDS003", "EDS005", "EDS006", "EDS009", "EDS011", "EDS013", "EDS014", "EDS015", "EDS016"),
+    *("EDS017", "EDS018", "EDS019", "EDS021", "EDS024", "EDS025", "EDS026", "EDS027", "EDS028", "EDS030", "EDS032"),
+    *("EDS033", "EDS040", "EDS041", "EDS042", "EDS045", "EDS046", "EDS050", "EDS051", "EDS061", "EDS070", "EDS081"),
+    *("EDS100", "EDS101", "EDS102", "PDO002", "PDO013", "PDO048", "PDO053", "PDO054"),
 }
 
 

@@ -21,6 +21,7 @@ from ..model.cia301.connections import cob_entries, predefined_cob_base, produce
 from ..model.cia301.objects import COB_ID_EMCY, FIRST_SDO_SERVER
 from ..model.cia301.pdo import COMM_SUBS, PREDEFINED, RX, TX, Pdo
 from ..model.cia301.slots import Slot, slot
+from . import examples as ex
 from .pdoread import device_pdos, first, int_value, node_ids
 from .rules import Context, Finding, rule
 
@@ -55,7 +56,8 @@ def _high_bits(cob: Cob, node_id: int) -> bool:
 Bit 29 of a COB-ID selects the frame format: 0 for an 11-bit CAN-ID, whose bits 28-11 must
 then be 0; 1 for a 29-bit CAN-ID. An 11-bit COB-ID with higher bits set is not a CAN-ID, and
 devices refuse it. Checked for PDOs, SYNC, TIME, EMCY and SDO COB-IDs.""",
-    "[1800sub1]\nDefaultValue=0x00000981",
+    ex.pdo("tx", "0x60410010", number=5, cob="0x80000981") + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010", number=5, cob="0x80000181") + ex.STATUSWORD,
 )
 def check_frame_bits(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -93,7 +95,8 @@ CiA 301 reserves CAN-IDs for NMT (000h), SYNC/EMCY area below 080h, the SDO (581
 601h-67Fh), NMT error control (701h-77Fh) and other services (101h-180h, 6E0h-6FFh, 780h-7FFh);
 a PDO must not use them. With `$NODEID` the COB-ID is checked for every node-ID the device may
 have, and the first one that fails is named.""",
-    "[1800sub1]\nDefaultValue=$NODEID+0x580",
+    ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x585") + ex.STATUSWORD,
+    fixed=ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
 )
 def check_restricted(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -115,7 +118,8 @@ def check_restricted(ctx: Context) -> Iterator[Finding]:
 CAN-IDs 080h (SYNC), 081h-0FFh (EMCY of the pre-defined connection set) and 100h (TIME) belong
 to those services by default. A PDO there collides as soon as a node uses them, and its high
 priority starves other traffic.""",
-    "[1800sub1]\nDefaultValue=0x00000090",
+    ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x90") + ex.STATUSWORD,
+    fixed=ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
 )
 def check_service_ids(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -155,7 +159,8 @@ PDOs 1-4 (RPDO 200h/300h/400h/500h, TPDO 180h/280h/380h/480h) COB-IDs of base + 
 describes every node of its kind, so it writes them as `$NODEID+0x180`: a literal such as
 `0x181` fits one node-ID only, and another base breaks the convention masters rely on.
 A disabled PDO without CAN-ID (0x80000000) is accepted. Not checked in DCFs.""",
-    "[1800sub1]\nParameterName=COB-ID used by TPDO\nDefaultValue=0x181",
+    ex.pdo("tx", "0x60410010", cob="0x181") + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_predefined(ctx: Context) -> Iterator[Finding]:
     if ctx.device.is_dcf:
@@ -183,7 +188,8 @@ The pre-defined connection set ends at PDO 4; PDOs 5 to 512 have no default CAN-
 default COB-ID should be invalid (bit 31 set, e.g. 0x80000000) until a master assigns one.
 `$NODEID` there is legal CiA 306, but CANopenNode rebases only PDOs 1-4, so firmware and EDS
 then disagree. Not checked in DCFs.""",
-    "[1404sub1]\nParameterName=COB-ID used by RPDO\nDefaultValue=$NODEID+0x600",
+    ex.pdo("rx", "0x60400010", number=5, cob="$NODEID+0x1C0") + ex.CONTROLWORD,
+    fixed=ex.pdo("rx", "0x60400010", number=5) + ex.CONTROLWORD,
 )
 def check_extra_pdos_invalid(ctx: Context) -> Iterator[Finding]:
     if ctx.device.is_dcf:
@@ -214,7 +220,16 @@ another message the device sends (EMCY, SDO server response, SDO client request,
 when produced, NMT error control at 700h + node-ID), on one CAN-ID collide: arbitration fails
 and receivers mix up the data. `$NODEID` COB-IDs are compared for every node-ID the device may
 have.""",
-    "[1800sub1]\nDefaultValue=$NODEID+0x180\n[1801sub1]\nDefaultValue=0x181",
+    ex.NODE_5
+    + ex.pdo("tx", "0x60410010", cob="0x185")
+    + ex.pdo("tx", "0x60640020", number=2, cob="0x185")
+    + ex.STATUSWORD
+    + ex.POSITION,
+    fixed=ex.NODE_5
+    + ex.pdo("tx", "0x60410010", cob="0x185")
+    + ex.pdo("tx", "0x60640020", number=2, cob="0x285")
+    + ex.STATUSWORD
+    + ex.POSITION,
 )
 def check_own_collisions(ctx: Context) -> Iterator[Finding]:
     cobs = producers(ctx.device, device_pdos(ctx))
@@ -231,7 +246,16 @@ def check_own_collisions(ctx: Context) -> Iterator[Finding]:
 Two valid RPDOs with one CAN-ID both receive every frame of that producer. CiA 301 allows it
 (one TPDO feeding several mappings, or a broadcast to several nodes); it is reported so that it
 is a decision, not an accident.""",
-    "[1400sub1]\nDefaultValue=0x201\n[1401sub1]\nDefaultValue=0x201",
+    ex.NODE_5
+    + ex.pdo("rx", "0x60400010", cob="0x205")
+    + ex.pdo("rx", "0x607A0020", number=2, cob="0x205")
+    + ex.CONTROLWORD
+    + ex.TARGET_POSITION,
+    fixed=ex.NODE_5
+    + ex.pdo("rx", "0x60400010", cob="0x205")
+    + ex.pdo("rx", "0x607A0020", number=2, cob="0x305")
+    + ex.CONTROLWORD
+    + ex.TARGET_POSITION,
 )
 def check_shared_rpdo_ids(ctx: Context) -> Iterator[Finding]:
     cobs = [cob for pdo, cob in _pdo_cobs(ctx) if pdo.direction == RX]
@@ -257,7 +281,11 @@ def _comm_subs(ctx: Context) -> Iterator[tuple[Pdo, Slot]]:
 Sub0 of a PDO communication record holds the highest sub-index the record supports (2..6).
 Sub-objects above it do not exist for an SDO client, so an inhibit time or event timer
 described there is never used.""",
-    "[1800sub0]\nDefaultValue=3\n[1800sub5]\nParameterName=Event timer",
+    ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}).replace(
+        "DefaultValue=5\n", "DefaultValue=2\n", 1
+    )
+    + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
 )
 def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -281,7 +309,8 @@ def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
     """
 Inhibit time (sub3) and SYNC start value (sub6) only govern transmission; an RPDO receives, so
 a non-zero default there has no effect and suggests the record was copied from a TPDO.""",
-    "[1400sub3]\nParameterName=Inhibit time\nDataType=0x0006\nDefaultValue=100",
+    ex.pdo("rx", "0x60400010", comm={3: ("Inhibit time", 0x0006, "rw", 10)}) + ex.CONTROLWORD,
+    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_rpdo_tx_only(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -300,7 +329,8 @@ CiA 301 fixes the types of the PDO communication record: transmission type (sub2
 compatibility entry (sub4) and SYNC start value (sub6) are UNSIGNED8, the COB-ID (sub1) is
 UNSIGNED32, inhibit time (sub3) and event timer (sub5) are UNSIGNED16. Masters write them
 with these sizes; another size makes the SDO download fail.""",
-    "[1800sub5]\nParameterName=Event timer\nDataType=0x0007",
+    ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0007, "rw", 100)}) + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
 )
 def check_comm_types(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -338,7 +368,8 @@ def check_comm_mappable(ctx: Context) -> Iterator[Finding]:
     """
 Transmission types 241 to 251 are reserved by CiA 301; a device answers an SDO download of one
 with an abort, and its behaviour with one as default is undefined.""",
-    "[1800sub2]\nParameterName=Transmission type\nDefaultValue=245",
+    ex.pdo("tx", "0x60410010", tt=245) + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010", tt=1) + ex.STATUSWORD,
 )
 def check_reserved_tt(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -355,7 +386,8 @@ def check_reserved_tt(ctx: Context) -> Iterator[Finding]:
     """
 Transmission types 252 (synchronous, RTR only) and 253 (asynchronous, RTR only) describe when a
 TPDO answers a remote request; CiA 301 does not define them for an RPDO.""",
-    "[1400sub2]\nParameterName=Transmission type\nDefaultValue=253",
+    ex.pdo("rx", "0x60400010", tt=253) + ex.CONTROLWORD,
+    fixed=ex.pdo("rx", "0x60400010", tt=255) + ex.CONTROLWORD,
 )
 def check_rpdo_rtr(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -383,7 +415,8 @@ signals an event, or when its event timer expires. With the event timer at 0 it 
 such events; if the mapped objects never raise one, the TPDO stays silent until a master sets a
 timer. Informational, for valid TPDOs that map something: whether the application raises events
 is not in the EDS.""",
-    "[1800sub2]\nDefaultValue=255\n[1800sub5]\nParameterName=Event timer\nDefaultValue=0",
+    ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
 )
 def check_event_without_timer(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, timer, _ in _timing(ctx):
@@ -404,7 +437,8 @@ def check_event_without_timer(ctx: Context) -> Iterator[Finding]:
     """
 The SYNC start value (sub6) picks the SYNC counter value at which a cyclic synchronous TPDO
 (transmission type 1-240) starts. For any other transmission type the device ignores it.""",
-    "[1800sub2]\nDefaultValue=255\n[1800sub6]\nParameterName=SYNC start value\nDefaultValue=2",
+    ex.pdo("tx", "0x60410010", tt=0, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010", tt=1, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
 )
 def check_sync_start(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, _, start in _timing(ctx):
@@ -425,7 +459,8 @@ def check_sync_start(ctx: Context) -> Iterator[Finding]:
 The event timer (sub5, ms) triggers event-driven TPDOs (transmission type 254/255). A TPDO that
 is sent on SYNC (0-240) or on request (252/253) ignores it, so a non-zero value promises a
 period the device does not keep.""",
-    "[1800sub2]\nDefaultValue=1\n[1800sub5]\nParameterName=Event timer\nDefaultValue=100",
+    ex.pdo("tx", "0x60410010", tt=1, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
 )
 def check_timer_ignored(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, timer, _ in _timing(ctx):
@@ -446,7 +481,14 @@ def check_timer_ignored(ctx: Context) -> Iterator[Finding]:
 The inhibit time (sub3) counts in 100 us, the event timer (sub5) in ms. When the event period is
 shorter than the inhibit time, the inhibit time wins and the TPDO is sent less often than the
 event timer says; often the units were confused.""",
-    "[1800sub3]\nDefaultValue=100\n[1800sub5]\nDefaultValue=5\n; 5 ms < 10 ms",
+    ex.pdo(
+        "tx", "0x60410010", tt=254, comm={3: ("Inhibit time", 0x0006, "rw", 200), 5: ("Event timer", 0x0006, "rw", 10)}
+    )
+    + ex.STATUSWORD,
+    fixed=ex.pdo(
+        "tx", "0x60410010", tt=254, comm={3: ("Inhibit time", 0x0006, "rw", 50), 5: ("Event timer", 0x0006, "rw", 10)}
+    )
+    + ex.STATUSWORD,
 )
 def check_timer_vs_inhibit(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, inhibit, timer, _ in _timing(ctx):

@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 
 from ..eds.reader import read_bytes
+from ..model.cia301.pdo import COMM_BASE, MAP_BASE, PREDEFINED, RX, TX
 from .rules import Finding
 from .runner import lint
 
@@ -93,3 +94,76 @@ def fragment_line(fragment: str, text: str, line: int) -> int | None:
     first = text.count("\n", 0, start) + 1
     number = line - first + 1
     return number if 1 <= number <= len(fragment.strip().splitlines()) else None
+
+
+# --- builders for the PDO and COB-ID rule examples -----------------------------------------------------------
+
+
+def section(name: str, **keys: object) -> str:
+    return f"[{name}]\n" + "".join(f"{key}={value}\n" for key, value in keys.items())
+
+
+def var(index: int, name: str, dtype: int, access: str = "rw", default: object = 0, mapping: int = 1) -> str:
+    """A VAR object section."""
+    return section(
+        f"{index:04X}", ParameterName=name, ObjectType="0x7", DataType=f"0x{dtype:04X}", AccessType=access,
+        DefaultValue=default, PDOMapping=mapping,
+    )  # fmt: skip
+
+
+def _sub(index: int, subindex: int, name: str, dtype: int, access: str, default: object) -> str:
+    return section(
+        f"{index:04X}sub{subindex:X}", ParameterName=name, ObjectType="0x7", DataType=f"0x{dtype:04X}",
+        AccessType=access, DefaultValue=default, PDOMapping=0,
+    )  # fmt: skip
+
+
+def record(index: int, name: str, subs: dict[int, tuple[str, int, str, object]]) -> str:
+    """A RECORD with its sub-objects {sub-index: (name, data type, access, default)}."""
+    text = section(f"{index:04X}", ParameterName=name, ObjectType="0x9", SubNumber=len(subs))
+    return text + "".join(_sub(index, sub, *spec) for sub, spec in sorted(subs.items()))
+
+
+def pdo(
+    direction: str,
+    *entries: str,
+    number: int = 1,
+    cob: str | None = None,
+    tt: object = None,
+    count: object = None,
+    comm: dict[int, tuple[str, int, str, object]] | None = None,
+    parts: str = "comm+map",
+) -> str:
+    """A PDO: its communication record (COB-ID, transmission type, `comm` sub-objects) and its mapping;
+    `parts` "comm" or "map" leaves the other record out."""
+    rx = direction == "rx"
+    base = COMM_BASE[RX if rx else TX] + number - 1
+    predefined = PREDEFINED[RX if rx else TX][min(number, 4) - 1]
+    cob_id = cob or (f"$NODEID+0x{predefined:X}" if number <= 4 else "0x80000000")
+    subs = {
+        1: ("COB-ID", 0x0007, "rw", cob_id),
+        2: ("Transmission type", 0x0005, "rw", tt if tt is not None else (255 if rx else 1)),
+        **(comm or {}),
+    }
+    kind = "RPDO" if rx else "TPDO"
+    highest = ("Highest sub-index supported", 0x0005, "ro", max(subs))
+    text = "" if parts == "map" else record(base, f"{kind}{number} communication parameter", {0: highest, **subs})
+    mapped = {position: (f"Mapped object {position}", 0x0007, "rw", entry) for position, entry in enumerate(entries, 1)}
+    number_of = len(entries) if count is None else count
+    if parts == "comm":
+        return text
+    count_sub = ("Number of mapped objects", 0x0005, "rw", number_of)
+    map_index = MAP_BASE[RX if rx else TX] + number - 1
+    return text + record(map_index, f"{kind}{number} mapping parameter", {0: count_sub, **mapped})
+
+
+STATUSWORD = var(0x6041, "Statusword", 0x0006, "ro")
+CONTROLWORD = var(0x6040, "Controlword", 0x0006, "rw")
+POSITION = var(0x6064, "Position actual value", 0x0004, "ro")
+VELOCITY = var(0x606C, "Velocity actual value", 0x0004, "ro")
+TARGET_POSITION = var(0x607A, "Target position", 0x0004, "rw")
+# [DeviceComissioning] of node 5: the example is a DCF, its values are configured ones.
+NODE_5 = section(
+    "DeviceComissioning", NodeID=5, NodeName="drive", Baudrate=500, NetNumber=1, NetworkName="net", CANopenManager=0,
+    LSS_SerialNumber=0,
+)  # fmt: skip

@@ -7,6 +7,7 @@ from collections.abc import Iterable, Iterator
 from ..model import AccessType, ObjectKind, Severity
 from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry, Pdo, dummy_type
 from ..model.cia301.slots import Slot
+from . import examples as ex
 from .pdoread import device_pdos, dummies, length_fix, limits_fit, mapped_objects, named, with_severity
 from .rules import Context, Finding, Fix, rule
 
@@ -25,7 +26,8 @@ BOOLEAN = 0x0001
 A PDO is described by a pair: the communication record (1400h/1800h + n - 1) says whether and
 when it is sent, the mapping record (1600h/1A00h + n - 1) what it carries. One without the other
 leaves the PDO unusable; configuration tools cannot set it up.""",
-    "[1400]\nParameterName=RPDO communication parameter 1\nObjectType=0x9\nSubNumber=3\n; no [1600]",
+    ex.pdo("rx", "0x60400010", parts="comm") + ex.CONTROLWORD,
+    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_pairs(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -73,7 +75,13 @@ The COB-ID (sub1) and transmission type (sub2) of a communication record and the
 mapped objects (sub0) of a mapping record are mandatory in CiA 301. CiA 306 adds that a PDO
 described explicitly must describe all its sub-objects: CompactPDO fills in only the PDOs the
 file leaves out entirely, never a part of one.""",
-    "[1400]\nSubNumber=2\n[1400sub0]\nDefaultValue=1\n[1400sub1]\nDefaultValue=$NODEID+0x200\n; no sub2",
+    ex.record(
+        0x1400,
+        "RPDO1 communication parameter",
+        {0: ("Highest sub-index supported", 0x0005, "ro", 1), 1: ("COB-ID", 0x0007, "rw", "$NODEID+0x200")},
+    )
+    + ex.pdo("rx", parts="map"),
+    fixed=ex.pdo("rx"),
 )
 def check_mandatory_subs(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -96,7 +104,10 @@ def check_mandatory_subs(ctx: Context) -> Iterator[Finding]:
 In a PDO_MAPPING record sub0 (number of mapped objects) is UNSIGNED8 and read-only (static
 mapping) or writable (dynamic mapping); every entry is an UNSIGNED32 holding index, sub-index
 and bit length. Another type cannot hold an entry; a write-only sub0 cannot be read back.""",
-    "[1A00sub1]\nParameterName=Mapped object 1\nDataType=0x0006",
+    ex.pdo("tx", parts="comm")
+    + ex.record(0x1A00, "TPDO1 mapping parameter", {0: ("Number of mapped objects", 0x0005, "wo", 0)}),
+    fixed=ex.pdo("tx", parts="comm")
+    + ex.record(0x1A00, "TPDO1 mapping parameter", {0: ("Number of mapped objects", 0x0005, "rw", 0)}),
 )
 def check_mapping_types(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -128,7 +139,8 @@ Sub0 of a mapping record is the number of valid entries, sub1..sub<n>. A PDO hol
 entries (40h), and every counted entry must exist in the record, else the device and the tools
 disagree about what the PDO carries. FEh and FFh mark multiplexed PDOs (SAM-/DAM-MPDO) and are
 not counts.""",
-    "[1600sub0]\nDefaultValue=3\n[1600sub1]\n[1600sub2]\n; no [1600sub3]",
+    ex.pdo("rx", "0x60400010", count=2) + ex.CONTROLWORD,
+    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_count(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -155,7 +167,8 @@ def check_count(ctx: Context) -> Iterator[Finding]:
 Entries 1..sub0 of a mapping record are all mapped; an entry of 0 inside that range maps
 nothing, and devices reject it ("hole in mapping"). Lower sub0 or fill the entry. Reported
 once per PDO: at sub0 when every counted entry is 0, else at the first empty entry.""",
-    "[1A00sub0]\nDefaultValue=2\n[1A00sub1]\nDefaultValue=0x00000000",
+    ex.pdo("tx", "0x00000000", "0x60410010") + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_holes(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -182,7 +195,8 @@ def check_holes(ctx: Context) -> Iterator[Finding]:
     """
 A mapping entry names an index and sub-index of the object dictionary. When the device has no
 such object, downloading the mapping fails (abort 0602 0000h) and the PDO cannot be built.""",
-    "[1600sub1]\nDefaultValue=0x21000010\n; no [2100]",
+    ex.pdo("rx", "0x21000010"),
+    fixed=ex.pdo("rx", "0x21000010") + ex.var(0x2100, "Setpoint", 0x0006, "rw"),
 )
 def check_exists(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, obj, var in mapped_objects(ctx):
@@ -199,7 +213,8 @@ def check_exists(ctx: Context) -> Iterator[Finding]:
     """
 A VAR object has only sub-index 0; a mapping entry that gives it another sub-index names
 nothing. Usually the entry should end in 00 before the length byte (0x60400010).""",
-    "[1600sub1]\nDefaultValue=0x60400110\n[6040]\nObjectType=0x7",
+    ex.pdo("rx", "0x60400110") + ex.CONTROLWORD,
+    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_var_subindex(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, obj, _ in mapped_objects(ctx):
@@ -218,7 +233,8 @@ def check_var_subindex(ctx: Context) -> Iterator[Finding]:
     """
 Only objects with PDOMapping=1 may be mapped (a missing key means 0). A device refuses any other
 (abort 0604 0041h), so the default mapping cannot be restored.""",
-    "[1A00sub1]\nDefaultValue=0x10180120\n[1018sub1]\nPDOMapping=0",
+    ex.pdo("tx", "0x60410010") + ex.var(0x6041, "Statusword", 0x0006, "ro", mapping=0),
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_mappable(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, _, var in mapped_objects(ctx):
@@ -237,7 +253,8 @@ An RPDO writes the objects it maps, a TPDO reads them. A read-only or constant o
 RPDO, or a write-only object in a TPDO, is an error. rwr ("read on process input") marks an
 object for TPDOs and rww ("write on process output") one for RPDOs: rwr in an RPDO or rww in a
 TPDO is reported as a warning.""",
-    "[1600sub1]\nDefaultValue=0x60410010\n[6041]\nAccessType=ro",
+    ex.pdo("rx", "0x60410010") + ex.STATUSWORD,
+    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_direction(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, _, var in mapped_objects(ctx):
@@ -269,7 +286,8 @@ size of the mapped object's data type (UNSIGNED16: 10h, INTEGER32: 20h). Devices
 safe fix rewrites the length byte from the type (unsafe when the object's limits do not fit
 its DataType, which is then suspect itself). A BOOLEAN mapped as 8 bits, as CANopenNode
 stores it, is only a warning with an unsafe fix: such a device expects the byte.""",
-    "[1A00sub1]\nDefaultValue=0x60410008\n[6041]\nDataType=0x0006",
+    ex.pdo("tx", "0x60410008") + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_length(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -304,7 +322,8 @@ def check_length(ctx: Context) -> Iterator[Finding]:
     """
 The mapped entries of a PDO travel in one CAN frame: at most 64 bits on classic CAN, 512 bits
 with CAN FD (`--can-fd`). A device refuses a longer mapping (abort 0604 0042h).""",
-    "[1A00sub0]\nDefaultValue=3\n; 0x60640020, 0x606C0020, 0x60410010: 80 bits",
+    ex.pdo("tx", "0x60640020", "0x606C0020", "0x60410010") + ex.POSITION + ex.VELOCITY + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60640020", "0x606C0020") + ex.POSITION + ex.VELOCITY,
 )
 def check_total(ctx: Context) -> Iterator[Finding]:
     limit = ctx.options.max_pdo_bits
@@ -350,7 +369,8 @@ def check_granularity(ctx: Context) -> Iterator[Finding]:
     """
 Mapping one object twice in a PDO sends (or writes) the same value twice; devices report it as
 a "duplicate map". It is usually a copy-and-paste slip in the default mapping.""",
-    "[1A00sub1]\nDefaultValue=0x60410010\n[1A00sub2]\nDefaultValue=0x60410010",
+    ex.pdo("tx", "0x60410010", "0x60410010") + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_duplicates(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -414,7 +434,8 @@ def check_shared_rpdo_objects(ctx: Context) -> Iterator[Finding]:
 An entry with an index below 1000h is a dummy: it names a data type (0001h-001Bh, or a DEFTYPE)
 whose bits the receiver skips. Its sub-index is 0 and its type has a fixed size; strings,
 DOMAIN, record types and undefined indices cannot be dummies.""",
-    "[1600sub2]\nDefaultValue=0x00090008",
+    ex.pdo("rx", "0x00090008"),
+    fixed=ex.pdo("rx", "0x00050008"),
 )
 def check_dummy_shape(ctx: Context) -> Iterator[Finding]:
     for pdo, entry in dummies(ctx):
@@ -440,7 +461,12 @@ def check_dummy_shape(ctx: Context) -> Iterator[Finding]:
 A device supports dummy entries only for the data types its `[DummyUsage]` section enables
 (`Dummy0005=1`); a missing key or section means not supported. A default mapping with another
 dummy cannot be downloaded.""",
-    "[DummyUsage]\nDummy0005=0\n[1600sub2]\nDefaultValue=0x00050008",
+    ex.section("DummyUsage", Dummy0001=0, Dummy0002=1, Dummy0003=1, Dummy0004=1, Dummy0005=0, Dummy0006=1, Dummy0007=1)
+    + ex.pdo("rx", "0x00050008"),
+    fixed=ex.section(
+        "DummyUsage", Dummy0001=0, Dummy0002=1, Dummy0003=1, Dummy0004=1, Dummy0005=1, Dummy0006=1, Dummy0007=1
+    )
+    + ex.pdo("rx", "0x00050008"),
 )
 def check_dummy_usage(ctx: Context) -> Iterator[Finding]:
     usage = ctx.device.dummy_usage
@@ -462,7 +488,8 @@ def check_dummy_usage(ctx: Context) -> Iterator[Finding]:
 A dummy entry tells a receiver which bits to skip; CiA 301 provides no dummy mapping for a
 TPDO, which would have to invent the data. Some devices send zeros, but portable files do not
 rely on it.""",
-    "[1A00sub2]\nDefaultValue=0x00050008",
+    ex.pdo("tx", "0x00050008", "0x60410010") + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_dummy_in_tpdo(ctx: Context) -> Iterator[Finding]:
     for pdo, entry in dummies(ctx):

@@ -71,6 +71,7 @@ ParameterValue, Denotation, ParamRefd, UploadFile and DownloadFile (and LastEDS 
 describe one configured node and belong in a DCF (CiA 306 §5). In an EDS, tools ignore them
 or take them for the device's defaults.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nParameterValue=100",
+    fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=100\nPDOMapping=0",
 )
 def dcf_keys(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -93,6 +94,7 @@ A DCF describes one configured node: [DeviceComissioning] (spelled with one "m")
 NodeID, and `$NODEID` values are resolved with it. Without it the DCF's COB-IDs are unknown;
 lely dcfchk fails with `$NODEID not defined` unless a node-ID is given on the command line.""",
     "[DeviceComissioning]\nNodeName=Drive\nBaudrate=500",
+    fixed="[DeviceComissioning]\nNodeID=5\nNodeName=Drive\nBaudrate=500",
 )
 def dcf_node_id(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -112,6 +114,7 @@ def dcf_node_id(ctx: Context) -> Iterator[Finding]:
     """
 CANopen node-IDs are 1..127. lely also writes 255 for "not configured" (EDS063).""",
     "[DeviceComissioning]\nNodeID=128",
+    fixed="[DeviceComissioning]\nNodeID=127",
 )
 def node_id_range(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning
@@ -128,6 +131,7 @@ def node_id_range(ctx: Context) -> Iterator[Finding]:
 lely writes `NodeID=255` (0xFF) for a node whose node-ID is assigned later (LSS). `$NODEID`
 values stay unresolved.""",
     "[DeviceComissioning]\nNodeID=0xFF",
+    fixed="[DeviceComissioning]\nNodeID=5",
 )
 def node_id_unset(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning

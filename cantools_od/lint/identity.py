@@ -188,6 +188,7 @@ def granularity_range(ctx: Context) -> Iterator[Finding]:
 [DeviceComissioning] Baudrate (kbit/s) is one of the rates [DeviceInfo] marks as supported with
 `BaudRate_<rate>=1`; otherwise the node is configured for a bit rate it cannot use.""",
     "[DeviceInfo]\nBaudRate_250=1\nBaudRate_500=0\n\n[DeviceComissioning]\nNodeID=5\nBaudrate=500",
+    fixed="[DeviceInfo]\nBaudRate_250=1\nBaudRate_500=1\n\n[DeviceComissioning]\nNodeID=5\nBaudrate=500",
 )
 def commissioned_rate(ctx: Context) -> Iterator[Finding]:
     section, rates = ctx.device.commissioning, ctx.device.device_info.baud_rates
@@ -208,6 +209,7 @@ def commissioned_rate(ctx: Context) -> Iterator[Finding]:
 `_250`, `_500`, `_800` and `_1000` (a missing key counts as 0). A device with none set cannot be
 put on any network; usually the keys are missing or misspelt (`Baudrate_500`).""",
     "[DeviceInfo]\nVendorName=Example\nBaudRate_500=0",
+    fixed="[DeviceInfo]\nVendorName=Example\nBaudRate_500=1",
 )
 def no_rates(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info

@@ -55,6 +55,7 @@ DataType and AccessType for VAR, DEFTYPE, sub-objects and CompactSubObj objects;
 ARRAY, RECORD and DEFSTRUCT without CompactSubObj. A missing key equals an empty one. Tools
 crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006",
+    fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def missing_keys(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):
@@ -135,6 +136,7 @@ implicitly: sub0 plus subs 1..n copied from the object. It is not allowed on VAR
 sub-objects, must be 1..254, and excludes both a non-zero SubNumber and `[<index>sub<n>]`
 sections, which would describe the same sub-objects twice.""",
     "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=4\nSubNumber=5",
+    fixed="[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=4",
 )
 def compact_misuse(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -169,6 +171,10 @@ ObjFlags (CiA 306 §4.6.3.3) defines bit 0 (refuse write on download) and bit 1 
 scan); bits 2-31 are reserved and must be 0. lely ORs ObjFlags into its own flag word, where
 reserved bits switch on lely-internal behaviour.""",
     "[2000]\nParameterName=Setpoint\nDataType=0x0006\nAccessType=rw\nObjFlags=0x4",
+    fixed=(
+        "[2000]\nParameterName=Setpoint\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\nObjFlags=0x0"
+    ),
 )
 def obj_flags(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):
@@ -310,6 +316,7 @@ DEFTYPE or DEFSTRUCT object at that index. Reserved indices (000Eh, 0017h, 001Ch
 custom types without their definition cannot be read: python-canopen falls back to DOMAIN,
 canmatrix and lely fail.""",
     "[2000]\nParameterName=Gain\nDataType=0x0040\nAccessType=rw",
+    fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def undefined_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects

@@ -65,6 +65,11 @@ section. A listed object without one (e.g. 6505h in a real drive EDS) makes tool
 the file or announce an object the device does not describe. A missing 1000h, 1001h or 1018h is
 reported by EDS011.""",
     "[OptionalObjects]\nSupportedObjects=1\n1=0x6505\n; no [6505] section in the file",
+    fixed=(
+        "[OptionalObjects]\nSupportedObjects=1\n1=0x6505\n\n[6505]\n"
+        "ParameterName=Http drive catalog address\nObjectType=0x7\nDataType=0x0009\nAccessType=ro\n"
+        "DefaultValue=x\nPDOMapping=0"
+    ),
 )
 def listed_absent(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in listings(ctx.device):
@@ -94,6 +99,10 @@ others in [OptionalObjects]. Tools that follow the lists (lely, Vector CANeds) i
 unlisted objects; python-canopen imports every section, so the two disagree about the device.
 Objects implied by CompactPDO need not be listed.""",
     "[ManufacturerObjects]\nSupportedObjects=0\n\n[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw",
+    fixed=(
+        "[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n\n[2000]\nParameterName=Speed\n"
+        "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def unlisted(ctx: Context) -> Iterator[Finding]:
     listed = {index for _, _, _, index in listings(ctx.device)}

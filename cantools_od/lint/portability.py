@@ -54,6 +54,7 @@ python-canopen reads Dummy0001 to Dummy0007 from [DummyUsage] and raises an exce
 is missing, although CiA 306 treats a missing key as "not supported" (sparse lely DCFs fail
 this way). Write all seven keys, with 0 where a type is not usable as a dummy.""",
     "[DummyUsage]\nDummy0005=1\nDummy0006=1\nDummy0007=1",
+    fixed="[DummyUsage]\nDummy0001=0\nDummy0002=0\nDummy0003=0\nDummy0004=0\nDummy0005=1\nDummy0006=1\nDummy0007=1",
 )
 def dummy_usage(ctx: Context) -> Iterator[Finding]:
     usage = ctx.device.dummy_usage
@@ -74,6 +75,10 @@ lely writes VISIBLE_STRING values in double quotes and strips them when reading;
 other tools take the quotes as part of the text. In a file that is not otherwise lely's, a quoted
 value is read with its quotes everywhere but in lely.""",
     '[1008]\nParameterName=Device name\nDataType=0x0009\nAccessType=const\nDefaultValue="Drive"',
+    fixed=(
+        "[1008]\nParameterName=Device name\nObjectType=0x7\nDataType=0x0009\nAccessType=const\n"
+        "DefaultValue=Drive\nPDOMapping=0"
+    ),
 )
 def quoted_strings(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -258,6 +263,10 @@ def duplicate_names(ctx: Context) -> Iterator[Finding]:
 python-canopen reads the keys Factor, Unit, Description and StorageLocation in object sections;
 they are not CiA 306 keys, and lely dcfchk rejects them as invalid entries.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nUnit=rpm",
+    fixed=(
+        "[2000]\nParameterName=Speed (rpm)\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
 )
 def extension_keys(ctx: Context) -> Iterator[Finding]:
     for _, label, var in _vars(ctx.device):
@@ -311,6 +320,7 @@ CiA 306 does not specify how TIME_OF_DAY and TIME_DIFFERENCE values are written.
 `days ms`; python-canopen concatenates the two numbers into one integer (`365 43200000` becomes
 36543200000) and CANopenNode expects a byte array.""",
     "[2000]\nParameterName=Start\nDataType=0x000C\nAccessType=rw\nDefaultValue=365 43200000",
+    fixed="[2000]\nParameterName=Start\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def time_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -350,6 +360,7 @@ def nodeid_limits(ctx: Context) -> Iterator[Finding]:
 `PDOMapping=` without a value means 0 in CiA 306 (an empty entry equals a missing one), but
 python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key out.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nPDOMapping=",
+    fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
     for _, label, var in _vars(ctx.device):
@@ -369,6 +380,10 @@ ObjFlags bit 0 (refuse write on download) and bit 1 (refuse read on scan) are Ci
 ORs the value into its own flag word with bits 0 and 1 swapped, python-canopen keeps it as an
 unknown option and the lely code generator drops it. Reported once per file.""",
     "[2000]\nParameterName=Serial number\nDataType=0x0007\nAccessType=ro\nObjFlags=0x2",
+    fixed=(
+        "[2000]\nParameterName=Serial number\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
 )
 def obj_flags(ctx: Context) -> Iterator[Finding]:
     found = [(label, var) for _, label, var in _vars(ctx.device) if var.obj_flags and not var.obj_flags & ~0x3]
@@ -391,6 +406,10 @@ CiA 306 has no inline comments: `Motor #1; left` is a legal name. lely's C parse
 at the first `#` or `;`, lely's Python tools and python-canopen at a `;` (lely: also `#`) after
 a blank, so those tools read a truncated name or string. Reported once per file.""",
     "[2000]\nParameterName=Motor #1 speed\nDataType=0x0006\nAccessType=rw",
+    fixed=(
+        "[2000]\nParameterName=Motor 1 speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
 )
 def comment_characters(ctx: Context) -> Iterator[Finding]:
     device = ctx.device

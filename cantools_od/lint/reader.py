@@ -84,6 +84,12 @@ declare(
 A `[<index>sub<n>]` section exists, but `[<index>]` does not (or the sub-index is above FEh).
 The section is kept as text, but no tool can use it.""",
     "[2000sub1]\nParameterName=Orphan",
+    fixed=(
+        "[2000]\nParameterName=Parent\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=Child\nObjectType=0x7\nDataType=0x0005\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 declare(
     "EDS104",
@@ -93,6 +99,10 @@ declare(
 Such a section needs its object, and the first three need CompactSubObj on it; keys are
 decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) counts them.""",
     "[2000Name]\nNrOfEntries=2\n1=First",
+    fixed=(
+        "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=2\n\n"
+        "[2000Name]\nNrOfEntries=2\n1=First\n2=Second"
+    ),
 )
 
 

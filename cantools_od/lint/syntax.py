@@ -115,6 +115,7 @@ The section is not defined by CiA 306 (nor is it a module-concept, [Tools] or [D
 section). It is kept as it is, but no other tool gives it a meaning; a typo in a known section's
 name leaves that section missing.""",
     "[DeviceInfos]\nVendorName=Example",
+    fixed="[DeviceInfo]\nVendorName=Example\nBaudRate_500=1",
 )
 def unknown_sections(ctx: Context) -> Iterator[Finding]:
     for raw in ctx.device.other_sections:
@@ -196,6 +197,7 @@ def date_time(ctx: Context) -> Iterator[Finding]:
 Without EDSVersion a file counts as CiA 306 version 3.0. Files following the current
 specification write `EDSVersion=4.0`.""",
     "[FileInfo]\nFileName=device.eds\nFileVersion=1",
+    fixed="[FileInfo]\nFileName=device.eds\nFileVersion=1\nEDSVersion=4.0",
 )
 def eds_version_missing(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.file_info
@@ -211,6 +213,7 @@ def eds_version_missing(ctx: Context) -> Iterator[Finding]:
 Files written to CiA 306 v1.3 state `EDSVersion=4.0`. Other values seen in the wild (`4.2`, the
 python-canopen default, or `402`) name no version of the specification.""",
     "[FileInfo]\nEDSVersion=4.2",
+    fixed="[FileInfo]\nEDSVersion=4.0",
 )
 def eds_version(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.file_info
@@ -227,6 +230,7 @@ def eds_version(ctx: Context) -> Iterator[Finding]:
 [Comments] counts its lines in `Lines` and numbers them Line1 ... Line<Lines> without gaps.
 python-canopen reads exactly `Lines` lines and fails on a missing one.""",
     "[Comments]\nLines=3\nLine1=First\nLine2=Second",
+    fixed="[Comments]\nLines=2\nLine1=First\nLine2=Second",
 )
 def comment_lines(ctx: Context) -> Iterator[Finding]:
     comments = ctx.device.comments

@@ -108,6 +108,7 @@ INTEGER16 -32768..32767, and so on; a TIME value's days fit 16 bits and its mill
 bits (a day for TIME_OF_DAY). `$NODEID` values are checked for every node-ID 1..127 (or the
 node-ID given). Tools truncate such values or reject the file.""",
     "[2000]\nParameterName=Count\nDataType=0x0005\nAccessType=rw\nDefaultValue=300",
+    fixed="[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=300\nPDOMapping=0",
 )
 def type_range(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -149,6 +150,7 @@ def _range_problem(dtype: DataType, value: Value, nids: tuple[int, ...]) -> str 
 LowLimit and HighLimit bound numeric values (integers, BOOLEAN, REAL); strings, OCTET_STRING,
 DOMAIN and the TIME types have no order a limit could use (CiA 306, LowLimit/HighLimit).""",
     "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nLowLimit=0",
+    fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=x\nPDOMapping=0",
 )
 def non_numeric_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -188,6 +190,10 @@ def _inverted(ctx: Context, entry: Entry) -> bool:
 No value can satisfy a LowLimit greater than its HighLimit; every write to the entry fails.
 Signed limits are compared as the numbers they denote (two's-complement hex included).""",
     "[2000]\nParameterName=Offset\nDataType=0x0003\nAccessType=rw\nLowLimit=100\nHighLimit=-100",
+    fixed=(
+        "[2000]\nParameterName=Offset\nObjectType=0x7\nDataType=0x0003\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\nLowLimit=-100\nHighLimit=100"
+    ),
 )
 def limits_order(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -233,6 +239,10 @@ def _outside(ctx: Context, entry: Entry, key: str, value: Value) -> str | None:
 The DefaultValue lies within LowLimit..HighLimit (CiA 306, LowLimit/HighLimit); a device cannot start with a
 value it would refuse to be written. `$NODEID` defaults are checked for node-IDs 1..127.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nDefaultValue=5000\nHighLimit=3000",
+    fixed=(
+        "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=3000\n"
+        "PDOMapping=0\nHighLimit=3000"
+    ),
 )
 def default_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -271,6 +281,10 @@ def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
 `$NODEID` formulas are defined for integer entries only (CiA 306 §4.3). In a VISIBLE_STRING
 the text stays as it is, which is rarely what was meant: usually the DataType is wrong.""",
     "[2000]\nParameterName=COB-ID\nDataType=0x0009\nAccessType=ro\nDefaultValue=$NODEID+0x180",
+    fixed=(
+        "[2000]\nParameterName=COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
+        "DefaultValue=$NODEID+0x180\nPDOMapping=0"
+    ),
 )
 def nodeid_text(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -289,6 +303,10 @@ VISIBLE_STRING holds the visible ISO 646 characters 20h-7Eh. Other characters (u
 control characters) have no defined encoding on the bus; devices and tools show them
 differently. Use UNICODE_STRING or OCTET_STRING for other text.""",
     "[1008]\nParameterName=Device name\nDataType=0x0009\nAccessType=const\nDefaultValue=Motor 5°",
+    fixed=(
+        "[1008]\nParameterName=Device name\nObjectType=0x7\nDataType=0x0009\nAccessType=const\n"
+        "DefaultValue=Motor 5 deg\nPDOMapping=0"
+    ),
 )
 def visible_string(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -311,6 +329,7 @@ A REAL DefaultValue, ParameterValue or limit that is NaN or infinite cannot be c
 checked; as a limit it disables the check, as a default it is rarely intended. Peer tools read
 `nan`/`inf` text differently or not at all.""",
     "[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\nDefaultValue=nan",
+    fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1.5\nPDOMapping=0",
 )
 def real_finite(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):

@@ -351,7 +351,8 @@ def check_comm_types(ctx: Context) -> Iterator[Finding]:
     """
 The sub-objects of a PDO communication record configure PDOs; CiA 301 does not map them into
 PDOs. PDOMapping=1 there invites a tool to offer them for mapping.""",
-    "[1800sub1]\nParameterName=COB-ID used by TPDO\nPDOMapping=1",
+    (ex.pdo("tx", "0x60410010").replace("$NODEID+0x180\nPDOMapping=0", "$NODEID+0x180\nPDOMapping=1") + ex.STATUSWORD),
+    fixed=(ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
 )
 def check_comm_mappable(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):

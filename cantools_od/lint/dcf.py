@@ -6,6 +6,7 @@ import re
 from collections.abc import Iterator
 
 from ..model import Device, Object, RawSection, Severity, Variable
+from . import examples as ex
 from .common import explicit_vars, file_start, given, invalid, where
 from .rules import Context, Finding, rule
 
@@ -25,7 +26,14 @@ _DCF_KEYS = ("ParameterValue", "Denotation", "ParamRefd", "UploadFile", "Downloa
 UploadFile receives the content of a DOMAIN read from the device, so the object should be `ro`;
 DownloadFile is written to the device, so the object should be `wo` (CiA 306 §5). lely forces
 these access types and warns.""",
-    "[1F50]\nParameterName=Program\nObjectType=0x2\nAccessType=rw\nDownloadFile=firmware.bin",
+    (
+        ex.NODE_5 + "[1F50]\nParameterName=Program\nObjectType=0x7\nDataType=0x000F\nAccessType=rw\nPDOMapping=0\n"
+        "DownloadFile=firmware.bin"
+    ),
+    fixed=(
+        ex.NODE_5 + "[1F50]\nParameterName=Program\nObjectType=0x7\nDataType=0x000F\nAccessType=wo\nPDOMapping=0\n"
+        "DownloadFile=firmware.bin"
+    ),
 )
 def file_access(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):
@@ -50,7 +58,14 @@ def _domain(device: Device, obj: Object, var: Variable) -> bool:
     """
 UploadFile and DownloadFile name files that hold the content of a DOMAIN (ObjectType 0x2 or
 DataType 0x000F); other entries have a value of their data type.""",
-    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=ro\nUploadFile=speed.bin",
+    (
+        ex.NODE_5 + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=ro\nDefaultValue=0\n"
+        "PDOMapping=0\nUploadFile=speed.bin"
+    ),
+    fixed=(
+        ex.NODE_5 + "[2000]\nParameterName=Speed log\nObjectType=0x7\nDataType=0x000F\nAccessType=ro\nPDOMapping=0\n"
+        "UploadFile=speed.bin"
+    ),
 )
 def file_domain(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):

@@ -6,7 +6,8 @@ through `run()`: the failing example must trigger its rule, the fixed one must n
 The frame holds what every EDS needs ([FileInfo], [DeviceInfo], [DummyUsage], the mandatory
 objects 1000h, 1001h, 1018h and the three object lists, computed from the objects the file ends
 up with), so that an example shows only what its rule is about. A section the fragment gives
-replaces the frame's. A comment line `; ^ CODE` marks the line above it as where CODE is reported.
+replaces the frame's; a [DeviceInfo] it gives is completed with the frame's keys it does not set
+(write `BaudRate_125=0` to say a key is 0).
 """
 
 from __future__ import annotations
@@ -14,12 +15,12 @@ from __future__ import annotations
 import re
 
 from ..eds.reader import read_bytes
-from ..model.cia301.pdo import COMM_BASE, MAP_BASE, PREDEFINED, RX, TX
+from ..model.cia301.objects import MANDATORY, MANUFACTURER_AREA
+from ..model.cia301.pdo import COMM_BASE, MAP_BASE, PREDEFINED, RX, TX, count_pdos
 from .rules import Finding
 from .runner import lint
 
 _SECTION = re.compile(r"^\[([^\]]+)\]", re.MULTILINE)
-_MARK = re.compile(r"^;\s*\^\s*([A-Z]{3}\d{3})\s*$")
 _FRAME = {
     "FileInfo": "FileName=example.eds\nFileVersion=1\nFileRevision=0\nEDSVersion=4.0\nDescription=Rule example\n"
     "CreationTime=12:00PM\nCreationDate=01-01-2025\nCreatedBy=cantools-od\nModificationTime=12:00PM\n"
@@ -51,33 +52,49 @@ def _listing(name: str, indices: list[int]) -> str:
     return f"[{name}]\n" + "\n".join(lines) + "\n"
 
 
-def frame(fragment: str) -> str:
-    """The fragment inside a clean EDS."""
+def _merged_info(fragment_lines: list[str], frame_keys: list[str]) -> list[tuple[str, int | None]]:
+    """The fragment's lines (with their numbers), the frame's [DeviceInfo] keys it does not set added
+    at the end of its [DeviceInfo] section (numbered None)."""
+    out: list[tuple[str, int | None]] = []
+    in_info, given = False, set()
+    for number, line in enumerate(fragment_lines, 1):
+        if line.startswith("["):
+            if in_info:
+                out += [(key, None) for key in frame_keys if key.split("=", 1)[0].lower() not in given]
+            in_info = line.strip().lower() == "[deviceinfo]"
+        elif in_info and "=" in line:
+            given.add(line.split("=", 1)[0].strip().lower())
+        out.append((line, number))
+    if in_info:
+        out += [(key, None) for key in frame_keys if key.split("=", 1)[0].lower() not in given]
+    return out
+
+
+def _framed(fragment: str) -> tuple[str, dict[int, int]]:
+    """The framed text, and for each of its lines that comes from the fragment, the fragment's line."""
     given = {name.lower() for name in _SECTION.findall(fragment)}
     parts = [f"[{name}]\n{body}\n" for name, body in _FRAME.items() if name.lower() not in given]
-    text = "\n".join(parts) + "\n" + fragment.strip() + "\n"
+    head = "\n".join(parts) + "\n"
+    body = _merged_info(fragment.strip().splitlines(), _FRAME["DeviceInfo"].splitlines())
+    first = head.count("\n") + 1
+    origin = {first + i: number for i, (_, number) in enumerate(body) if number is not None}
+    text = head + "".join(line + "\n" for line, _ in body)
     objects = sorted({int(m, 16) for m in re.findall(r"^\[([0-9A-Fa-f]{4})\]", text, re.MULTILINE)})
-    rx = sum(1 for i in objects if 0x1400 <= i < 0x1600)
-    tx = sum(1 for i in objects if 0x1800 <= i < 0x1A00)
-    text = text.replace("NrOfRXPDO={rx}", f"NrOfRXPDO={rx}").replace("NrOfTXPDO={tx}", f"NrOfTXPDO={tx}")
+    text = text.replace("NrOfRXPDO={rx}", f"NrOfRXPDO={count_pdos(objects, RX)}")
+    text = text.replace("NrOfTXPDO={tx}", f"NrOfTXPDO={count_pdos(objects, TX)}")
     areas = {
-        "MandatoryObjects": [i for i in objects if i in (0x1000, 0x1001, 0x1018)],
-        "OptionalObjects": [i for i in objects if i not in (0x1000, 0x1001, 0x1018) and not 0x2000 <= i < 0x6000],
-        "ManufacturerObjects": [i for i in objects if 0x2000 <= i < 0x6000],
+        "MandatoryObjects": [i for i in objects if i in MANDATORY],
+        "OptionalObjects": [i for i in objects if i not in MANDATORY and i not in MANUFACTURER_AREA],
+        "ManufacturerObjects": [i for i in objects if i in MANUFACTURER_AREA],
     }
     lists = [_listing(name, areas[name]) for name in _LISTS if name.lower() not in given]
-    return text + "\n" + "\n".join(lists)
+    return text + "\n" + "\n".join(lists), origin
 
 
-def marked_lines(text: str) -> dict[str, set[int]]:
-    """CODE -> the lines `; ^ CODE` marks (the line above each mark, 1-based)."""
-    found: dict[str, set[int]] = {}
-    lines = text.splitlines()
-    for number, line in enumerate(lines, 1):
-        match = _MARK.match(line.strip())
-        if match:
-            found.setdefault(match.group(1), set()).add(number - 1)
-    return found
+def frame(fragment: str) -> str:
+    """The fragment inside a clean EDS: the frame's sections it does not give, its [DeviceInfo]
+    completed with the frame's keys it does not set."""
+    return _framed(fragment)[0]
 
 
 def run(fragment: str, name: str = "example.eds") -> tuple[str, list[Finding]]:
@@ -88,12 +105,8 @@ def run(fragment: str, name: str = "example.eds") -> tuple[str, list[Finding]]:
 
 def fragment_line(fragment: str, text: str, line: int) -> int | None:
     """The line of the fragment that line `line` of its framed text is, or None when it is in the frame."""
-    start = text.find(fragment.strip())
-    if start < 0 or line <= 0:
-        return None
-    first = text.count("\n", 0, start) + 1
-    number = line - first + 1
-    return number if 1 <= number <= len(fragment.strip().splitlines()) else None
+    framed, origin = _framed(fragment)
+    return origin.get(line) if framed == text else None
 
 
 # --- builders for the PDO and COB-ID rule examples -----------------------------------------------------------
@@ -167,3 +180,14 @@ NODE_5 = section(
     "DeviceComissioning", NodeID=5, NodeName="drive", Baudrate=500, NetNumber=1, NetworkName="net", CANopenManager=0,
     LSS_SerialNumber=0,
 )  # fmt: skip
+
+
+def identity(serial: str | None = None) -> str:
+    """The identity object 1018h of the frame, with a serial number (sub4) when given."""
+    subs = {
+        1: ("Vendor-ID", 0x0007, "ro", "0x1"),
+        2: ("Product code", 0x0007, "ro", "0x2"),
+        3: ("Revision number", 0x0007, "ro", "0x3"),
+        **({4: ("Serial number", 0x0007, "ro", serial)} if serial is not None else {}),
+    }
+    return record(0x1018, "Identity object", {0: ("Highest sub-index supported", 0x0005, "ro", max(subs)), **subs})

@@ -18,6 +18,7 @@ from ..model.cia301.objects import (
     MANDATORY,
 )
 from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
+from . import examples as ex
 from .common import present
 from .rules import Context, Finding, Fix, rule
 
@@ -62,6 +63,7 @@ compare one or the other with the device; a mismatch (CANopenEditor #226: Revisi
 while 1018h sub3 = 0x00010000) makes them reject the right device or accept the wrong one.""",
     "[DeviceInfo]\nRevisionNumber=0\n\n[1018sub3]\nParameterName=Revision number\nDataType=0x0007\n"
     "AccessType=ro\nDefaultValue=0x00010000",
+    fixed=("[DeviceInfo]\nRevisionNumber=0x3"),
 )
 def identity(ctx: Context) -> Iterator[Finding]:
     info, obj = ctx.device.device_info, ctx.device.objects.get(IDENTITY)
@@ -97,8 +99,8 @@ In a DCF, [DeviceComissioning] LSS_SerialNumber is the serial number of the conf
 which 1018h sub4 also states (CiA 306 §5). LSS masters address the device by it; two
 different numbers cannot both be right. Not checked when either side is missing or 0 (not
 configured).""",
-    "[DeviceComissioning]\nLSS_SerialNumber=0x00000017\n\n[1018sub4]\nParameterName=Serial number\n"
-    "DataType=0x0007\nAccessType=ro\nParameterValue=0x00000018",
+    (ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17") + ex.identity(serial="0x18")),
+    fixed=(ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17") + ex.identity(serial="0x17")),
 )
 def serial_number(ctx: Context) -> Iterator[Finding]:
     section, obj = ctx.device.commissioning, ctx.device.objects.get(IDENTITY)
@@ -119,7 +121,8 @@ def serial_number(ctx: Context) -> Iterator[Finding]:
 NrOfRXPDO and NrOfTXPDO count the RPDO (1400h-15FFh) and TPDO (1800h-19FFh) communication
 objects the device has, the ones CompactPDO implies included. Tools size their PDO tables from
 these keys; a count that disagrees with the objects means a PDO is missing or the key is stale.""",
-    "[DeviceInfo]\nNrOfRXPDO=2\n\n[1400]\nParameterName=RPDO1 communication parameter\n...\n; no [1401]",
+    ("[DeviceInfo]\nNrOfRXPDO=2\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
+    fixed=("[DeviceInfo]\nNrOfRXPDO=1\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
 )
 def pdo_counts(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -147,7 +150,8 @@ def _fix_pdo_count(field: str, direction: str) -> Callable[[Device], None]:
 `Granularity=0` states that the PDO mapping cannot be changed (CiA 306, [DeviceInfo]). Mapping objects
 (1600h-17FFh, 1A00h-1BFFh) with writable sub-objects say the opposite; configuration tools
 either refuse to remap or remap a device that rejects it.""",
-    "[DeviceInfo]\nGranularity=0\n\n[1A00sub0]\nParameterName=Number of mapped objects\nDataType=0x0005\nAccessType=rw",
+    ("[DeviceInfo]\nGranularity=0\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
+    fixed=("[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
 )
 def static_mapping(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -172,6 +176,7 @@ def static_mapping(ctx: Context) -> Iterator[Finding]:
 Granularity is the PDO mapping granularity in bits: 0 (mapping not modifiable) or 1..64 (CiA 306,
 [DeviceInfo]); a classic CAN frame holds 64 bits.""",
     "[DeviceInfo]\nGranularity=128",
+    fixed=("[DeviceInfo]\nGranularity=8"),
 )
 def granularity_range(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -208,8 +213,14 @@ def commissioned_rate(ctx: Context) -> Iterator[Finding]:
 [DeviceInfo] marks the bit rates the device supports with `BaudRate_10`, `_20`, `_50`, `_125`,
 `_250`, `_500`, `_800` and `_1000` (a missing key counts as 0). A device with none set cannot be
 put on any network; usually the keys are missing or misspelt (`Baudrate_500`).""",
-    "[DeviceInfo]\nVendorName=Example\nBaudRate_500=0",
-    fixed="[DeviceInfo]\nVendorName=Example\nBaudRate_500=1",
+    (
+        "[DeviceInfo]\nVendorName=Example\nBaudRate_10=0\nBaudRate_20=0\nBaudRate_50=0\nBaudRate_125=0\n"
+        "BaudRate_250=0\nBaudRate_500=0\nBaudRate_800=0\nBaudRate_1000=0"
+    ),
+    fixed=(
+        "[DeviceInfo]\nVendorName=Example\nBaudRate_10=0\nBaudRate_20=0\nBaudRate_50=0\nBaudRate_125=0\n"
+        "BaudRate_250=0\nBaudRate_500=1\nBaudRate_800=0\nBaudRate_1000=0"
+    ),
 )
 def no_rates(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info

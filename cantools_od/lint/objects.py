@@ -76,7 +76,18 @@ Per the obligation matrix of CiA 306 (§4.6.3) ARRAY, RECORD and DEFSTRUCT objec
 CompactSubObj describe their values in sub-objects and carry no DataType, AccessType,
 DefaultValue, PDOMapping or limits; DOMAIN objects have no PDOMapping, SubNumber or limits; VAR
 and sub-objects have no SubNumber. Tools disagree about what such keys mean.""",
-    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=5\nAccessType=ro",
+    (
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):
@@ -100,7 +111,18 @@ def _written(var: Variable, key: str, sub: bool) -> bool:
 SubNumber counts the sub-objects an ARRAY, RECORD or DEFSTRUCT implements, sub-index 0 included
 (and FFh excluded); each needs a `[<index>sub<n>]` section. A wrong count makes tools allocate
 the wrong number of entries or reject the file.""",
-    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=4\n[1018sub0]\n...\n[1018sub1]\n...",
+    (
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def sub_number(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -195,7 +217,18 @@ def _has_subs(obj: Object) -> bool:
 Every ARRAY, RECORD and DEFSTRUCT has a sub-index 0 of type UNSIGNED8 (0x0005) holding the
 highest sub-index (or the number of entries). Tools read it to size the object; without it, or
 with another type, they reject the object or read the wrong count.""",
-    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=1\n[1018sub0]\nParameterName=Count\nDataType=0x0007",
+    (
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -225,8 +258,20 @@ Sub-index 0 of an ARRAY or RECORD holds the highest sub-index it implements; sub
 be consecutive (1010h may have sub0 and sub4 only, sub0=4). A smaller value hides the upper
 sub-objects. Not checked: 1003h (sub0 counts the errors), PDO objects (see the PDO rules) and
 objects whose sub0 is writable, where sub0 counts the valid entries.""",
-    "[1018]\n...\n[1018sub0]\nParameterName=Highest sub-index\nDataType=0x0005\nAccessType=ro\nDefaultValue=2\n"
-    "[1018sub1]\n...\n[1018sub2]\n...\n[1018sub3]\n...",
+    (
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\nParameterName=Second\nObjectType=0x7\n"
+        "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=2\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\nParameterName=Second\nObjectType=0x7\n"
+        "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def sub0_value(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -261,7 +306,19 @@ def _fix_sub0(index: int) -> Callable[[Device], None]:
     """
 Sub-index FFh is reserved: it holds the object's data type and object code, is not counted by
 SubNumber and is never described in an EDS.""",
-    "[2000subFF]\nParameterName=Structure\nDataType=0x0007\nAccessType=ro",
+    (
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000subFF]\nParameterName=Structure\n"
+        "ObjectType=0x7\nDataType=0x0007\nAccessType=ro\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def sub_ff(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -277,7 +334,20 @@ def sub_ff(ctx: Context) -> Iterator[Finding]:
     """
 All elements (sub-index 1 and above) of an ARRAY share one data type; only a RECORD mixes types.
 Tools and generated code store an ARRAY as one C array.""",
-    "[2000sub1]\nDataType=0x0006\n...\n[2000sub2]\nDataType=0x0007",
+    (
+        "[2000]\nParameterName=Gains\nObjectType=0x8\nSubNumber=3\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=2\nPDOMapping=0\n\n[2000sub1]\nParameterName=Gain 1\nObjectType=0x7\n"
+        "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\nParameterName=Gain 2\n"
+        "ObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Gains\nObjectType=0x8\nSubNumber=3\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=2\nPDOMapping=0\n\n[2000sub1]\nParameterName=Gain 1\nObjectType=0x7\n"
+        "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\nParameterName=Gain 2\n"
+        "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def array_types(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):

@@ -173,7 +173,16 @@ def _fix_missing(name: str) -> Callable[[Device], None]:
 [MandatoryObjects] lists exactly the objects every CANopen device has: 1000h (device type),
 1001h (error register) and 1018h (identity). Other objects listed there, or one of these three
 listed in another list, make tools misjudge which objects the device must implement.""",
-    "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1017",
+    (
+        "[MandatoryObjects]\nSupportedObjects=4\n1=0x1000\n2=0x1001\n3=0x1018\n4=0x1017\n\n"
+        "[OptionalObjects]\nSupportedObjects=0\n\n[1017]\nParameterName=Producer heartbeat time\n"
+        "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n[OptionalObjects]\n"
+        "SupportedObjects=1\n1=0x1017\n\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\n"
+        "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def mandatory_list(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in listings(ctx.device):
@@ -195,7 +204,16 @@ def mandatory_list(ctx: Context) -> Iterator[Finding]:
 communication and device-profile areas (CiA 301, object dictionary index areas); C000h-FFFFh is reserved. Real devices
 put manufacturer objects into the profile area (e.g. 7001h), so this is a warning: check whether
 the object is misplaced or its index is.""",
-    "[OptionalObjects]\nSupportedObjects=1\n1=0x2000",
+    (
+        "[OptionalObjects]\nSupportedObjects=1\n1=0x2000\n\n[ManufacturerObjects]\nSupportedObjects=0\n\n"
+        "[2000]\nParameterName=Vendor value\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[OptionalObjects]\nSupportedObjects=0\n\n[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n\n"
+        "[2000]\nParameterName=Vendor value\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
 )
 def area(ctx: Context) -> Iterator[Finding]:
     entries = list(listings(ctx.device))
@@ -245,7 +263,15 @@ def data_type_listed(ctx: Context) -> Iterator[Finding]:
     """
 Each object appears once across the three object lists. A second entry inflates
 SupportedObjects and leaves tools unsure which list is meant.""",
-    "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n2=0x1017",
+    (
+        "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n2=0x1017\n\n[1017]\n"
+        "ParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[OptionalObjects]\nSupportedObjects=1\n1=0x1017\n\n[1017]\nParameterName=Producer heartbeat time\n"
+        "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def listed_twice(ctx: Context) -> Iterator[Finding]:
     seen: dict[int, tuple[str, int]] = {}
@@ -289,7 +315,18 @@ def _fix_duplicate(index: int) -> Callable[[Device], None]:
     """
 SupportedObjects gives the number of entries of an object list (CiA 306, object lists); tools read
 exactly that many entries, so a wrong count drops objects or fails on a missing entry.""",
-    "[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n2=0x2001",
+    (
+        "[OptionalObjects]\nSupportedObjects=1\n1=0x1016\n2=0x1017\n\n[1016]\n"
+        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[OptionalObjects]\nSupportedObjects=2\n1=0x1016\n2=0x1017\n\n[1016]\n"
+        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def supported_count(ctx: Context) -> Iterator[Finding]:
     for name in LISTS:
@@ -328,7 +365,18 @@ def _fix_count(name: str) -> Callable[[Device], None]:
     """
 The entries of an object list are keyed 1, 2, ... n in decimal, without gaps, leading zeros or
 other keys (CiA 306, object lists). Tools read keys 1..SupportedObjects and miss the others.""",
-    "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n3=0x1200",
+    (
+        "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n3=0x1016\n\n[1016]\n"
+        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n2=0x1016\n\n[1016]\n"
+        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def numbering(ctx: Context) -> Iterator[Finding]:
     for name in LISTS:

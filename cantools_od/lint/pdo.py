@@ -345,7 +345,8 @@ def check_total(ctx: Context) -> Iterator[Finding]:
 bytes only, so every entry's length and bit offset must be a multiple of 8 (1 allows bit-wise
 mapping). An entry off that grid cannot be configured on the device. Reported once, at
 Granularity, naming the first entry off the grid: either the key or the mapping is wrong.""",
-    "[DeviceInfo]\nGranularity=8\n[1A00sub1]\nDefaultValue=0x60000101",
+    ("[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
+    fixed=("[DeviceInfo]\nGranularity=1\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
 )
 def check_granularity(ctx: Context) -> Iterator[Finding]:
     grain = ctx.device.device_info.granularity
@@ -398,7 +399,19 @@ When two valid RPDOs of a configured node map the same object, whichever arrives
 the value races between two producers. Checked in DCFs only: an EDS's default mappings are a
 menu, and CiA 402 itself puts the controlword into each of its pre-defined RPDOs. Invalid PDOs
 are ignored.""",
-    "; t.dcf\n[1600sub1]\nParameterValue=0x60400010\n[1601sub1]\nParameterValue=0x60400010",
+    (
+        ex.NODE_5
+        + ex.pdo("rx", "0x60400010", cob="0x205")
+        + ex.pdo("rx", "0x60400010", number=2, cob="0x305")
+        + ex.CONTROLWORD
+    ),
+    fixed=(
+        ex.NODE_5
+        + ex.pdo("rx", "0x60400010", cob="0x205")
+        + ex.pdo("rx", "0x607A0020", number=2, cob="0x305")
+        + ex.CONTROLWORD
+        + ex.TARGET_POSITION
+    ),
 )
 def check_shared_rpdo_objects(ctx: Context) -> Iterator[Finding]:
     if not ctx.device.is_dcf:

@@ -168,7 +168,13 @@ def type_definitions(ctx: Context) -> Iterator[Finding]:
 CANopenEditor and eds-utils keep CANopenNode settings as comment lines (`;StorageLocation=RAM`,
 `;TPDODetectCos=1`). Other tools ignore them, so the storage groups they define exist only for
 CANopenNode's code generators. Reported once per file.""",
-    "[2000]\nParameterName=Counter\n;StorageLocation=PERSIST_COMM\nDataType=0x0007",
+    (
+        "[2000]\nParameterName=Counter\n;StorageLocation=PERSIST_COMM\nObjectType=0x7\nDataType=0x0007\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Counter\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
 )
 def extension_comments(ctx: Context) -> Iterator[Finding]:
     found: list[Section] = []
@@ -190,7 +196,14 @@ CiA 306 files are ASCII. Names, denotations and [FileInfo]/[DeviceInfo] texts wi
 characters (`µ`, `°C`, `‰`) depend on the file's encoding, which tools guess differently
 (python-canopen uses the locale; non-UTF-8 fails). Generated code and documentation then carry
 mangled names. VISIBLE_STRING values are checked by EDS038.""",
-    "[6075]\nParameterName=Motor rated current [mA] µ",
+    (
+        "[2000]\nParameterName=Motor rated current µA\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Motor rated current uA\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+        "DefaultValue=0\nPDOMapping=0"
+    ),
 )
 def non_ascii(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -239,7 +252,21 @@ def custom_types(ctx: Context) -> Iterator[Finding]:
 CANopenNode's generator names the members of a RECORD's C structure after its sub-objects'
 ParameterNames; two sub-objects with the same name produce colliding members, and other code
 generators (and CANopenEditor, #55) drop one of them.""",
-    "[2000sub1]\nParameterName=Value\n...\n[2000sub2]\nParameterName=Value",
+    (
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=2\nPDOMapping=0\n\n[2000sub1]\nParameterName=Value\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\nParameterName=Value\nObjectType=0x7\n"
+        "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
+        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+        "DefaultValue=2\nPDOMapping=0\n\n[2000sub1]\nParameterName=Value 1\nObjectType=0x7\n"
+        "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\n"
+        "ParameterName=Value 2\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0"
+    ),
 )
 def duplicate_names(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -285,6 +312,7 @@ CiA 306 reserves ProductVersion, ProductRevision, LMT_ManufacturerName, LMT_Prod
 ExtendedBootUpMaster and ExtendedBootUpSlave in [DeviceInfo] for compatibility; they are
 valid, but lely dcfchk wrongly rejects them as unknown keys.""",
     "[DeviceInfo]\nProductVersion=1",
+    fixed=("[DeviceInfo]\nVendorName=Example"),
 )
 def reserved_keys(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -341,8 +369,14 @@ def time_values(ctx: Context) -> Iterator[Finding]:
     """
 CiA 306 allows `$NODEID` in LowLimit and HighLimit, but only lely reads it there; python-canopen
 and CANopenNode drop or reject such limits.""",
-    "[1200sub1]\nParameterName=COB-ID client->server\nDataType=0x0007\nAccessType=ro\n"
-    "DefaultValue=$NODEID+0x600\nLowLimit=$NODEID+0x600",
+    (
+        "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+        "DefaultValue=$NODEID+0x580\nPDOMapping=0\nLowLimit=$NODEID+0x580"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+        "DefaultValue=$NODEID+0x580\nPDOMapping=0\nLowLimit=0x581"
+    ),
 )
 def nodeid_limits(ctx: Context) -> Iterator[Finding]:
     for _, label, var in _vars(ctx.device):
@@ -438,7 +472,8 @@ def comment_characters(ctx: Context) -> Iterator[Finding]:
 CiA 306 key names are case-insensitive, but python-canopen looks keys up case-sensitively: a key
 written `NrOfRxPDO` or `Baudrate_500` is not found there, and the tool silently takes a default
 (no PDOs, no baud rate). Write keys as CiA 306 spells them.""",
-    "[DeviceInfo]\nNrOfRxPDO=4",
+    ("[DeviceInfo]\nNrOfRxPDO=0"),
+    fixed=("[DeviceInfo]\nNrOfRXPDO=0"),
 )
 def key_spelling(ctx: Context) -> Iterator[Finding]:
     for section in ctx.device.sections():

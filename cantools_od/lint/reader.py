@@ -18,7 +18,11 @@ declare(
 A section or key appears twice. CiA 306 files are INI files, where names are unique; tools
 disagree on which copy counts. cantools-od merges repeated sections and keeps the last value
 of a repeated key.""",
-    "[1000]\nParameterName=Device type\nParameterName=Device kind",
+    (
+        "[2000]\nParameterName=Speed\nParameterName=Velocity\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
 )
 declare(
     "EDS030",
@@ -29,7 +33,10 @@ A value (DefaultValue, ParameterValue, LowLimit, HighLimit, or a number in an in
 cannot be read as its data type: not a number, an invalid octal number, a formula other than
 `$NODEID` plus constants, hex digits that are not byte pairs, a REAL out of range. The text is
 kept as it is.""",
-    "[2000]\nDataType=0x0005\nDefaultValue=twelve",
+    ("[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=twelve\nPDOMapping=0"),
+    fixed=(
+        "[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=12\nPDOMapping=0"
+    ),
 )
 declare(
     "EDS032",
@@ -39,7 +46,14 @@ declare(
 CiA 306 does not define this form, and peer tools read it differently: octal numbers (python-
 canopen drops them), C suffixes such as `LL`, two's-complement hex for negative limits (lely
 rejects it), an inline comment after a value (CiA 306 has none), blank-separated hex bytes.""",
-    "DefaultValue=0x3ED ; prevent homing",
+    (
+        "[2000]\nParameterName=Homing\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
+        "DefaultValue=0x3ED ; prevent homing\nPDOMapping=0"
+    ),
+    fixed=(
+        "; 0x3ED: prevent homing\n[2000]\nParameterName=Homing\nObjectType=0x7\nDataType=0x0006\n"
+        "AccessType=rw\nDefaultValue=0x3ED\nPDOMapping=0"
+    ),
 )
 declare(
     "EDS033",
@@ -49,7 +63,14 @@ declare(
 CiA 306 writes `$NODEID` first, in upper case, followed by `+` terms. `0x180+$NODEID` is
 rejected by lely; `$NODEID+0x100+0x80` is read as one term by python-canopen and lely;
 lower-case `$nodeid` is not accepted by every tool. Subtracting from `$NODEID` is an error.""",
-    "DefaultValue=0x180+$NODEID",
+    (
+        "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+        "DefaultValue=0x580+$NODEID\nPDOMapping=0"
+    ),
+    fixed=(
+        "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+        "DefaultValue=$NODEID+0x580\nPDOMapping=0"
+    ),
 )
 declare(
     "EDS100",
@@ -66,7 +87,8 @@ declare(
     """
 Inside a section every line is `key=value`, a `;` comment or blank. This line is none of them
 (or stands before the first section) and is ignored.""",
-    "[1000]\nParameterName Device type",
+    ("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue 0\nPDOMapping=0"),
+    fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
 )
 declare(
     "EDS102",

@@ -83,6 +83,7 @@ but they are often typos (`Baudrate_100`, `ParamterName`) that leave the intende
 Reserved compatibility keys of [DeviceInfo] (ProductVersion, ...) and the extension keys that
 python-canopen reads (Factor, Unit, Description, StorageLocation) are not reported here.""",
     "[DeviceInfo]\nBaudrate_100=1",
+    fixed=("[DeviceInfo]\nBaudRate_125=1"),
 )
 def unknown_keys(ctx: Context) -> Iterator[Finding]:
     for name, section, known in _keyed_sections(ctx.device):
@@ -175,7 +176,8 @@ def missing_sections(ctx: Context) -> Iterator[Finding]:
 CreationDate and ModificationDate are written `mm-dd-yyyy`, CreationTime and ModificationTime
 `hh:mm` followed by AM or PM. Editors often write ISO dates (2024-02-27) or 24-hour times
 (17:24:43), which other tools misread or reject.""",
-    "[FileInfo]\nCreationDate=2024-02-27\nCreationTime=17:24",
+    ("[FileInfo]\nFileName=example.eds\nEDSVersion=4.0\nCreationDate=2024-02-27\nCreationTime=17:24"),
+    fixed=("[FileInfo]\nFileName=example.eds\nEDSVersion=4.0\nCreationDate=02-27-2024\nCreationTime=05:24PM"),
 )
 def date_time(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.file_info

@@ -11,6 +11,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from ..model import DataType, Location, NodeIdExpr, Object, ObjectKind, Severity, TimeValue, Value, ValueKind, Variable
+from . import examples as ex
 from .rules import Context, Finding, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -261,7 +262,14 @@ def default_in_limits(ctx: Context) -> Iterator[Finding]:
 A DCF's ParameterValue (and each `[xxxxValue]` entry of a CompactSubObj object, checked against
 the object's limits) is configured into the device, which refuses values outside
 LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boot-up.""",
-    "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nHighLimit=3000\nParameterValue=5000",
+    (
+        ex.NODE_5 + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\nHighLimit=3000\nParameterValue=5000"
+    ),
+    fixed=(
+        ex.NODE_5 + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
+        "PDOMapping=0\nHighLimit=3000\nParameterValue=3000"
+    ),
 )
 def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):

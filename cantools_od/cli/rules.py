@@ -14,6 +14,7 @@ from .common import EXIT_USAGE
 def command(code: str | None) -> None:
     """List every code cantools-od can print, or explain CODE (a code or its name)."""
     from ..lint.codes import codes, find
+    from ..lint.ruledocs import explain
 
     if code is None:
         for found in codes().values():
@@ -28,6 +29,4 @@ def command(code: str | None) -> None:
     rule = explained.rule
     click.echo(f"{rule.code} ({explained.name}): {rule.summary}\n")
     click.echo(f"severity: {rule.severity.value}   family: {explained.family}\n")
-    click.echo(rule.description)
-    if rule.example:
-        click.echo("\nExample:\n\n" + "\n".join("    " + line for line in rule.example.splitlines()))
+    click.echo(explain(explained), nl=False)

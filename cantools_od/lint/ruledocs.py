@@ -15,8 +15,8 @@ _HEAD = """# Rules
 Every code `cantools-od` can print, generated from its registry (`cantools_od/lint/codes.py`) by
 `python -m cantools_od.lint.ruledocs > docs/rules.md`; a test keeps this file current.
 `cantools-od rules CODE` (or its name) shows the same text. Select codes with `--select`/`--ignore`
-by code, prefix or family name. Each failing example is run through `lint` inside a minimal valid
-EDS; the line shown is the example's line the finding is reported at.
+by code, prefix or family name. Each example is run through `lint` inside a minimal valid EDS
+(the tests do the same): the failing one triggers its rule at the line shown, the fixed one is clean.
 """
 
 
@@ -32,7 +32,7 @@ def _failing(code: Code) -> tuple[list[str], str | None]:
     text, findings = run(example)
     mine = [f for f in findings if f.code == code.code]
     lines = sorted({n for f in mine if (n := fragment_line(example, text, f.location.line)) is not None})
-    out = ["Fails:", "", *_block(example), ""]
+    out = ["Example:", "", *_block(example), ""]
     if lines:
         out += [f"Reported at line {', '.join(map(str, lines))} of the example.", ""]
     elif mine:
@@ -47,10 +47,19 @@ def _failing(code: Code) -> tuple[list[str], str | None]:
     return out, safety
 
 
+def explain(code: Code) -> str:
+    """One code's documentation, as `cantools-od rules CODE` prints it."""
+    return "\n".join(_body(code)).rstrip() + "\n"
+
+
 def _code(code: Code) -> list[str]:
     rule = code.rule
-    out = [f"### {code.code} `{code.name}`", "", f"**{rule.summary}** — {rule.severity.value}", ""]
-    out += [rule.description, ""]
+    return [f"### {code.code} `{code.name}`", "", f"**{rule.summary}** — {rule.severity.value}", "", *_body(code)]
+
+
+def _body(code: Code) -> list[str]:
+    rule = code.rule
+    out = [rule.description, ""]
     failing, derived = _failing(code)
     out += failing
     if rule.fixed:

@@ -134,7 +134,8 @@ _VALUE_KEYS = (("DefaultValue", "default"), ("ParameterValue", "parameter_value"
 CiA 306 defines CompactSubObj for ARRAY objects; lely also writes it on RECORDs (all its PDO
 mapping objects). python-canopen turns such a RECORD into an empty record and ignores its
 [xxxxValue] section, so PDO mappings are lost; CANopenEditor expands it.""",
-    "[1A00]\nParameterName=TPDO1 mapping\nObjectType=0x9\nDataType=0x0007\nAccessType=rw\nCompactSubObj=8",
+    "[2000]\nParameterName=Pair\nObjectType=0x9\nDataType=0x0007\nAccessType=rw\nCompactSubObj=2",
+    fixed="[2000]\nParameterName=Pair\nObjectType=0x8\nDataType=0x0007\nAccessType=rw\nCompactSubObj=2",
 )
 def compact_record(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():

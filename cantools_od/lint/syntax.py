@@ -53,8 +53,13 @@ declare(
     """
 CiA 306 limits every line to 255 characters; the length limits of the string keys (ParameterName
 241, Description 243, ...) follow from it. Tools with fixed line buffers cut longer lines.""",
-    "[2000]\nParameterName=<a name of 250 characters>",
+    "; "
+    + "A comment that goes on " * 12
+    + "\n"
+    + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     family="syntax",
+    fixed="; A comment that stays short\n"
+    + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 
 
@@ -137,7 +142,10 @@ def unknown_sections(ctx: Context) -> Iterator[Finding]:
 A ParameterName holds at most 241 characters. Names in a section are caught by the line
 limit (EDS001); this rule checks the names that [xxxxName] gives to CompactSubObj sub-objects,
 whose shorter keys let a too long name fit on one line.""",
-    "[2000Name]\nNrOfEntries=1\n1=<a name of 250 characters>",
+    "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=1\n\n"
+    "[2000Name]\nNrOfEntries=1\n1=" + "Input " * 41,
+    fixed="[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=1\n\n"
+    "[2000Name]\nNrOfEntries=1\n1=Input 1",
 )
 def long_names(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):

@@ -82,7 +82,8 @@ def _device_info(old: Device, new: Device) -> Iterator[Change]:
             yield _field_change(Kind.IDENTITY, impact, name, was, now, note)
         elif field in _FLAGS:
             if bool(was) != bool(now):
-                yield _field_change(Kind.DEVICE_INFO, *flag_impact(was, now, _FLAGS[field]), name, was, now)
+                impact, note = flag_impact(was, now, _FLAGS[field])
+                yield _field_change(Kind.DEVICE_INFO, impact, name, was, now, note)
         elif field in _COUNTS:
             impact, note = count_impact(was, now, _COUNTS[field])
             yield _field_change(Kind.DEVICE_INFO, impact, name, was, now, note)

@@ -67,11 +67,13 @@ def compare(
     """The changes from `old` to `new`.
 
     `node_id` is what `$NODEID` stands for when comparing a formula with a number (default: the
-    node-ID either device states). Pins (see docs/identifiers.md) decide the identifiers of each side:
+    node-ID each device states, else the other's). Pins (see docs/identifiers.md) decide the identifiers of each side:
     a renamed entry whose identifier is pinned is a cosmetic change.
     """
-    nid = node_id if node_id is not None else old.node_id if old.node_id is not None else new.node_id
-    sides = Sides(old, new, assign(old, old_pins), assign(new, new_pins), nid)
+    old_node, new_node = (node_id, node_id) if node_id is not None else (old.node_id, new.node_id)
+    old_node = old_node if old_node is not None else new_node
+    new_node = new_node if new_node is not None else old_node
+    sides = Sides(old, new, assign(old, old_pins), assign(new, new_pins), old_node, new_node)
     pdos = pdo_diffs(sides)
     shown = absorbed(pdos)
     objects = []

@@ -27,13 +27,14 @@ from .records import Change, Impact, Kind, ObjectDiff
 
 @dataclass(frozen=True)
 class Sides:
-    """Both devices with their identifiers, and the node-ID `$NODEID` stands for (None: unknown)."""
+    """Both devices with their identifiers, and the node-ID `$NODEID` stands for on each side (None: unknown)."""
 
     old: Device
     new: Device
     old_ids: Identifiers
     new_ids: Identifiers
-    node_id: int | None
+    old_node: int | None
+    new_node: int | None
 
 
 def same_value(old: Value | None, new: Value | None) -> bool:
@@ -297,7 +298,7 @@ def _limits(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
         if same_value(before, after):
             continue
         dtype = sides.new.entry_type(new.var, new.owner)
-        impact, note = limit_impact(before, after, low, dtype, sides.node_id)
+        impact, note = limit_impact(before, after, low, dtype, sides.new_node)
         yield _value_change(kind, impact, old, field, before, after, dtype, note)
 
 
@@ -331,7 +332,7 @@ def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
         if same_value(before, after):
             continue
         dtype = sides.new.entry_type(new.var, new.owner) or sides.old.entry_type(old.var, old.owner)
-        if _same_when_resolved(before, after, sides.node_id):
+        if _same_when_resolved(before, after, sides):
             yield _value_change(
                 Kind.NODEID_FORM,
                 Impact.VALUE,
@@ -340,19 +341,22 @@ def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
                 before,
                 after,
                 dtype,
-                f"the same for node-ID {sides.node_id}, but no longer follows the node-ID"
+                f"the same for node-ID {sides.new_node}, but no longer follows the node-ID"
                 if isinstance(before, NodeIdExpr)
-                else f"the same for node-ID {sides.node_id}, now follows the node-ID",
+                else f"the same for node-ID {sides.new_node}, now follows the node-ID",
             )
         else:
             yield _value_change(kind, Impact.VALUE, old, field, before, after, dtype)
 
 
-def _same_when_resolved(old: Value | None, new: Value | None, node_id: int | None) -> bool:
-    if node_id is None or isinstance(old, NodeIdExpr) == isinstance(new, NodeIdExpr):
+def _same_when_resolved(old: Value | None, new: Value | None, sides: Sides) -> bool:
+    """A formula on one side and a number on the other that mean the same for the node-IDs known."""
+    if isinstance(old, NodeIdExpr) == isinstance(new, NodeIdExpr):
         return False
-    resolve = [v.resolve(node_id) if isinstance(v, NodeIdExpr) else v for v in (old, new)]
-    return resolve[0] == resolve[1]
+    if isinstance(old, NodeIdExpr):
+        return sides.old_node is not None and old.resolve(sides.old_node) == new
+    assert isinstance(new, NodeIdExpr)
+    return sides.new_node is not None and new.resolve(sides.new_node) == old
 
 
 # Entry keys compared as plain fields: (attribute, kind, impact).

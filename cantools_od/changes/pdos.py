@@ -14,12 +14,12 @@ VALUE_KINDS = (Kind.DEFAULT, Kind.PARAMETER_VALUE, Kind.NODEID_FORM)
 
 def pdo_diffs(sides: Sides) -> list[PdoDiff]:
     """The PDOs that were added, removed or changed, RPDOs first."""
-    old = {(p.direction, p.number): p for p in pdo_map(sides.old, sides.node_id, sides.old_ids)}
-    new = {(p.direction, p.number): p for p in pdo_map(sides.new, sides.node_id, sides.new_ids)}
+    old = {(p.direction, p.number): p for p in pdo_map(sides.old, sides.old_node, sides.old_ids)}
+    new = {(p.direction, p.number): p for p in pdo_map(sides.new, sides.new_node, sides.new_ids)}
     diffs = []
     for key in sorted(set(old) | set(new), key=lambda k: (k[0] != "rx", k[1])):
         before, after = old.get(key), new.get(key)
-        changes = _changes(before, after, sides.node_id)
+        changes = _changes(before, after, sides.new_node)
         if changes:
             some = after or before
             assert some is not None

@@ -57,7 +57,7 @@ def _drawings(pdo: PdoDiff) -> Iterator[str]:
     if not any(change.kind.value in ("pdo-layout", "pdo-added", "pdo-removed") for change in pdo.changes):
         return
     left, right = _drawing(pdo.before), _drawing(pdo.after)
-    width = max(len(line) for line in left) + 4
+    width = max(44, *(len(line) for line in left)) + 2
     yield ""
     yield f"    {'before':<{width}}after"
     for number in range(max(len(left), len(right))):

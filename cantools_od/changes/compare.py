@@ -92,7 +92,7 @@ def _summary(device: Device, var: Variable, owner: Object) -> str:
 
 def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
     var = obj if subindex is None else obj.subs[subindex]
-    shown = f"{describe.text(var.name)}: {_summary(device, var, obj)}"
+    shown = _summary(device, var, obj)
     return Change(kind=kind, impact=Impact.COMPATIBLE, index=obj.index, subindex=subindex, new=var.name, new_text=shown)
 
 

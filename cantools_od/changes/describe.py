@@ -89,6 +89,13 @@ _LABELS = {
     "transmission_type": "transmission type",
     "mapping": "mapping",
     "links": "object links",
+    "device_info.vendor_number": "vendor-ID (VendorNumber)",
+    "device_info.product_number": "product code (ProductNumber)",
+    "device_info.revision_number": "revision number (RevisionNumber)",
+    "device_info.nr_of_rx_pdo": "number of RPDOs (NrOfRXPDO)",
+    "device_info.nr_of_tx_pdo": "number of TPDOs (NrOfTXPDO)",
+    "device_info.lss_supported": "LSS supported",
+    "commissioning.node_id": "node-ID",
 }
 
 

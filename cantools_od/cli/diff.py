@@ -19,6 +19,7 @@ from ..model import Device, Severity
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, node_id_option, read_device
 
 NULL_DEVICE = "/dev/null"  # git's name for the missing side of an added or deleted file
+DEVICE_SUFFIXES = (".eds", ".dcf", ".json", ".xdd", ".xdc", ".xpd")
 
 
 def _fail(message: str) -> NoReturn:
@@ -60,10 +61,11 @@ def command(
         if len(args) not in (2, 3):
             _fail("--git takes REV1 REV2 PATH, or REV PATH")
         old, new = _git_sides(args, node_id)
-    elif len(args) in (
-        7,
-        9,
-    ):  # GIT_EXTERNAL_DIFF: path old-file old-hex old-mode new-file new-hex new-mode [new-path info]
+    elif len(args) in (7, 9):
+        # GIT_EXTERNAL_DIFF: path old-file old-hex old-mode new-file new-hex new-mode [new-path similarity]
+        if Path(args[0]).suffix.lower() not in DEVICE_SUFFIXES:
+            _text_diff(args)  # GIT_EXTERNAL_DIFF sends every file: others get an ordinary diff
+            sys.exit(EXIT_OK)
         old, new = _external_sides(args, node_id)
     elif len(args) == 2:
         old, new = _file_side(args[0], node_id, old_pins), _file_side(args[1], node_id, new_pins)
@@ -74,6 +76,21 @@ def command(
     click.echo(_render(result, fmt), color=color if fmt == "text" else False)
     found = result.breaking if fail_on == "breaking" else not result.empty if fail_on == "any" else False
     sys.exit(EXIT_FINDINGS if found else EXIT_OK)
+
+
+def _text_diff(args: tuple[str, ...]) -> None:
+    """A unified diff of a file that is no device description, as git would show it."""
+    import difflib
+
+    path, new_path = args[0], args[7] if len(args) == 9 else args[0]
+    try:
+        old_lines, new_lines = (Path(name).read_bytes().decode("utf-8", "replace") for name in (args[1], args[4]))
+    except OSError as error:
+        _fail(f"{path}: cannot read: {error.strerror or error}")
+    lines = difflib.unified_diff(
+        old_lines.splitlines(keepends=True), new_lines.splitlines(keepends=True), f"a/{path}", f"b/{new_path}"
+    )
+    sys.stdout.writelines(line if line.endswith("\n") else line + "\n" for line in lines)
 
 
 def _render(result: object, fmt: str) -> str:

@@ -185,3 +185,11 @@ def test_git_external_diff_driver(repo: Path) -> None:
     _git(repo, "add", "od/new.eds")
     added = _git(repo, "diff", "--cached", env=env).stdout  # a new file: git passes /dev/null as the old side
     assert "object-added" not in added and "added" in added and "0x1017 Producer heartbeat time" in added
+    _git(repo, "commit", "-qm", "v3")
+    _git(repo, "mv", "od/new.eds", "od/renamed.eds")
+    (repo / "od" / "renamed.eds").write_text(set_key(BASE, "1017", "DefaultValue", "500"))
+    (repo / "NOTES.txt").write_text("not a device description\n")
+    _git(repo, "add", "-A")
+    shown = _git(repo, "diff", "--cached", "-M", env=env).stdout  # a rename: git passes 9 arguments
+    assert "--- a/od/new.eds\n+++ b/od/renamed.eds" in shown and "default: 0x3E8 (1000) → 0x1F4 (500)" in shown
+    assert "+not a device description" in shown  # GIT_EXTERNAL_DIFF sends every file: others as a text diff

@@ -175,7 +175,9 @@ def _git_show(revision: str, path: Path) -> bytes | None:
 
 
 def _git_side(revision: str | None, path: Path, node_id: int | None) -> Side:
-    from ..api import loads
+    """PATH at a revision (None: the work tree), read from a copy of the same name so that the file
+    name decides the format as it does for `load`; the pin file beside it at the same revision."""
+    from ..api import load
 
     name = os.fspath(path)
     if revision is None:
@@ -184,18 +186,21 @@ def _git_side(revision: str | None, path: Path, node_id: int | None) -> Side:
     if data is None:
         _fail(f"{name} does not exist at {revision}")
     source = f"{revision}:{name}"
-    try:
-        device = loads(data, node_id=node_id, source=source)
-    except ValueError as error:
-        _fail(f"{source}: not a cantools-od model: {error}")
-    _note_errors(device, source)
     pin_data = _git_show(revision, path.with_suffix(".ids.toml"))
-    pins = None
-    if pin_data is not None:
-        with tempfile.TemporaryDirectory() as folder:
-            pin_path = Path(folder) / path.with_suffix(".ids.toml").name
+    with tempfile.TemporaryDirectory() as folder:
+        copy = Path(folder) / path.name
+        copy.write_bytes(data)
+        try:
+            device = load(copy, node_id=node_id)
+        except ValueError as error:
+            _fail(f"{source}: not a cantools-od model: {error}")
+        pins = None
+        if pin_data is not None:
+            pin_path = copy.with_suffix(".ids.toml")
             pin_path.write_bytes(pin_data)
             pins = _pins_file(pin_path)
+    device.source = source
+    _note_errors(device, source)
     return Side(device, pins)
 
 

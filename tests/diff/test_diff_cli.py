@@ -193,3 +193,18 @@ def test_git_external_diff_driver(repo: Path) -> None:
     shown = _git(repo, "diff", "--cached", "-M", env=env).stdout  # a rename: git passes 9 arguments
     assert "--- a/od/new.eds\n+++ b/od/renamed.eds" in shown and "default: 0x3E8 (1000) → 0x1F4 (500)" in shown
     assert "+not a device description" in shown  # GIT_EXTERNAL_DIFF sends every file: others as a text diff
+
+
+def test_git_revisions_use_the_pin_file_of_each_revision(repo: Path) -> None:
+    (repo / "od" / "device.ids.toml").write_text('[identifiers]\n"1017" = "producer_heartbeat_time"\n')
+    _git(repo, "add", "od/device.ids.toml")
+    _git(repo, "commit", "-qm", "pin")
+    (repo / "od" / "device.eds").write_text(set_key(BASE, "1017", "ParameterName", "Heartbeat"))
+    _git(repo, "commit", "-qam", "rename")
+    result = run("diff", "--git", "HEAD~1", "HEAD", "od/device.eds", "--fail-on", "breaking", cwd=repo)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "cosmetic" in result.stdout and "identifier producer_heartbeat_time stays" in result.stdout
+    (repo / "od" / "device.ids.toml").unlink()
+    _git(repo, "commit", "-qam", "unpin")
+    unpinned = run("diff", "--git", "HEAD~3", "HEAD", "od/device.eds", "--fail-on", "breaking", cwd=repo)
+    assert unpinned.returncode == 1 and "identifier producer_heartbeat_time → heartbeat" in unpinned.stdout

@@ -329,7 +329,7 @@ def _value_change(
 def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     for field, kind in (("default", Kind.DEFAULT), ("parameter_value", Kind.PARAMETER_VALUE)):
         before, after = getattr(old.var, field), getattr(new.var, field)
-        if same_value(before, after):
+        if same_value(before, after) or (field == "parameter_value" and _same_configured(old.var, new.var, sides)):
             continue
         dtype = sides.new.entry_type(new.var, new.owner) or sides.old.entry_type(old.var, old.owner)
         if _same_when_resolved(before, after, sides):
@@ -347,6 +347,13 @@ def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
             )
         else:
             yield _value_change(kind, Impact.VALUE, old, field, before, after, dtype)
+
+
+def _same_configured(old: Variable, new: Variable, sides: Sides) -> bool:
+    """A ParameterValue on one side only that states the default (as a DCF made from an EDS does)."""
+    if (old.parameter_value is None) == (new.parameter_value is None):
+        return False
+    return same_value(old.value(sides.old_node), new.value(sides.new_node))
 
 
 def _same_when_resolved(old: Value | None, new: Value | None, sides: Sides) -> bool:

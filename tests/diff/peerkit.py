@@ -46,7 +46,21 @@ def read(path: Path) -> Reading | None:
     for attribute in DEVICE_ATTRIBUTES:
         reading[None, None, attribute] = getattr(info, attribute)
     reading[None, None, "allowed_baudrates"] = frozenset(info.allowed_baudrates)
+    reading[None, None, "node_id"] = od.node_id
     return reading
+
+
+def configured(reading: Reading, index: int, sub: int | None, other: Reading) -> Any:
+    """The value python-canopen would configure: ParameterValue, else the default resolved for the node-ID
+    (the other file's when this one states none, as `diff` does)."""
+    value, default = reading.get((index, sub, "value")), reading.get((index, sub, "default"))
+    if value is not None:
+        return value
+    if isinstance(default, tuple):  # ("$NODEID", offset)
+        node = reading.get((None, None, "node_id"))
+        node = node if node is not None else other.get((None, None, "node_id"))
+        return None if node is None else default[1] + node
+    return default
 
 
 def _variable(reading: Reading, index: int, sub: int | None, var: Any) -> None:

@@ -105,6 +105,8 @@ def test_roboteq_v60_to_v2() -> None:
 # - `$NODEID+n`: python-canopen adds a DCF's NodeID (None without one); peerkit keeps n, as the file says;
 # - a hex value of a signed type (0xFD of an INTEGER8): python-canopen reads 253, we read -3 (peerkit
 #   compares modulo 2**bits); an empty ParameterValue: python-canopen reads "", we read no value;
+# - a ParameterValue on one side only that states the value the other side configures with its default
+#   (as a DCF made from an EDS does): the configured value is the same, and we report no change of it;
 # - [DummyUsage]: python-canopen makes a VAR object at index 0x0001-0x0007 for each enabled dummy type,
 #   where we report a dummy-usage change;
 # - our kinds python-canopen has no attribute for: identifier, object-type of a sub-object, obj-flags,
@@ -179,6 +181,11 @@ def _missed(
         index, sub, attribute = key
         if index is None or before.get(key) == after.get(key) or _compact(old, index) or _compact(new, index):
             continue
+        same_configuration = peerkit.configured(before, index, sub, after) == peerkit.configured(
+            after, index, sub, before
+        )
+        if attribute == "value" and None in (before.get(key), after.get(key)) and same_configuration:
+            continue  # a ParameterValue on one side that states the configured value of the other
         kinds = reported[index, sub] | reported[index, None] | reported[index, "*"]
         if not kinds & (_COVERS[attribute] | _STRUCTURE | {"pdo"}):
             missed.append((key, before.get(key), after.get(key)))

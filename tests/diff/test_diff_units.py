@@ -234,3 +234,17 @@ def test_counts_and_flags() -> None:
     result = diff_of(set_key(drop_section(BASE, "1017"), "1005", "DefaultValue", "0x81"))
     assert result.counts() == {Impact.BREAKING: 1, Impact.COMPATIBLE: 0, Impact.VALUE: 1, Impact.COSMETIC: 0}
     assert result.breaking and not result.empty
+
+
+def test_an_eds_against_the_dcf_made_from_it() -> None:
+    """`convert` to a DCF states the node-ID and the values `$NODEID` defaults take: the same configuration."""
+    eds = device()
+    eds_for_node = loads(BASE, node_id=5)
+    dcf = loads(dumps(eds_for_node, "dcf"))
+    assert any(obj.subs.get(1) and obj.subs[1].parameter_value == 0x185 for obj in dcf.objects.values())
+    result = compare(eds, dcf)
+    assert summary(result) == {("commissioning", "value", None, None)}
+    change = only(result)
+    assert (change.field, change.old, change.new) == ("commissioning.node_id", None, 5)
+    configured = set_key(BASE, "1017", "ParameterValue", "250")  # a configured value that differs does count
+    assert summary(compare(device(configured), dcf)) >= {("parameter-value", "value", 0x1017, None)}

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import pytest
 from diffkit import BASE, device, diff_of, drop_section, only, set_key, summary
@@ -248,3 +249,16 @@ def test_an_eds_against_the_dcf_made_from_it() -> None:
     assert (change.field, change.old, change.new) == ("commissioning.node_id", None, 5)
     configured = set_key(BASE, "1017", "ParameterValue", "250")  # a configured value that differs does count
     assert summary(compare(device(configured), dcf)) >= {("parameter-value", "value", 0x1017, None)}
+
+
+def test_python_api_takes_paths_and_pin_files(tmp_path: Path) -> None:
+    import cantools_od
+
+    old, new, pins = tmp_path / "old.eds", tmp_path / "new.json", tmp_path / "pins.toml"
+    old.write_text(BASE)
+    new.write_bytes(dumps(device(set_key(BASE, "1017", "ParameterName", "Heartbeat")), "json"))
+    result = cantools_od.diff(old, new)
+    assert only(result).impact is Impact.BREAKING
+    pins.write_text('[identifiers]\n"1017" = "producer_heartbeat_time"\n')
+    assert only(cantools_od.diff(old, new, old_pins=pins, new_pins=pins)).impact is Impact.COSMETIC
+    assert cantools_od.diff(device(), old).empty  # a Device and a path mix

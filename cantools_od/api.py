@@ -61,6 +61,13 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> byt
     """
     if fmt == "json":
         return device.model_dump_json(indent=2).encode("utf-8") + b"\n"
+    if fmt in ("xdd", "xdc"):
+        from .xdd.writer import dumps_xml
+
+        return dumps_xml(device, xdc=fmt == "xdc", preserve=style == "preserve")
+    from .xdd.eds_form import eds_form
+
+    device = eds_form(device)
     dcf = fmt == "dcf"
     if dcf and not device.is_dcf and device.node_id is None:
         raise ValueError("an EDS becomes a DCF for one node: give its node-ID")

@@ -15,6 +15,9 @@ class ReadContext:
         self.report = report
         self.positions = Positions(data)
         self._spans: dict[int, dict[str, tuple[int, int, int]]] = {}
+        # For the preserving writer: the element each origin describes, and where each of its keys is written.
+        self.elements: dict[int, Element] = {}
+        self.marks: dict[int, dict[str, tuple[Element, str | None]]] = {}
 
     def spans(self, element: Element) -> dict[str, tuple[int, int, int]]:
         key = id(element)
@@ -33,10 +36,14 @@ class ReadContext:
 
     def origin(self, element: Element) -> Origin:
         line, column = self.positions.at(element.start)
-        return Origin(file=self.file, line=line, column=column)
+        origin = Origin(file=self.file, line=line, column=column)
+        self.elements[id(origin)] = element
+        return origin
 
     def mark(self, origin: Origin, key: str, element: Element, attr: str | None = None) -> None:
         """Record where `key` of the model is written: an attribute, or (attr None) an element's text."""
+        if attr is None or attr in self.spans(element):
+            self.marks.setdefault(id(origin), {})[key] = (element, attr)
         if attr is None:
             line, column = self.positions.at(element.start)
             value_column = self.positions.at(element.content_start)[1] if element.content_start else column

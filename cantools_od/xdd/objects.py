@@ -29,6 +29,7 @@ from .fragments import fragment, one_line
 from .safe import Element
 from .vocabulary import (
     DOMAIN,
+    EDS_PROPERTY,
     OBJECT_ATTRIBUTES,
     OCTET_STRING,
     PARAMETER_ACCESS,
@@ -207,7 +208,7 @@ class ObjectReader:
             var.access = AccessType.RO  # CiA 311: a parameter's access defaults to read
         for name, text in parameter.attrs.items():
             if name not in ("uniqueID", "access") and not name.startswith("xmlns"):
-                extra[f"parameter.{name}"] = text
+                extra[f"parameter@{name}"] = text
         type_element: Element | None = None
         info = CanopenNodeInfo()
         for child in parameter.children:
@@ -253,7 +254,8 @@ class ObjectReader:
             if child.text != var.name:
                 extra["label"] = one_line(child.text)
         elif local == "dataTypeIDRef":
-            extra["dataTypeIDRef"] = child.attrs.get("uniqueIDRef", "")
+            if not (var is owner and owner.has_subs):  # an ARRAY's or RECORD's type is rebuilt from its subs
+                extra["dataTypeIDRef"] = child.attrs.get("uniqueIDRef", "")
         else:
             return False
         return True
@@ -284,6 +286,9 @@ class ObjectReader:
             value = SrdoAccess(text)
         elif name == "CO_stringLengthMin" and text.isdigit():
             value = int(text)
+        if name.startswith(EDS_PROPERTY):
+            extra[name[len(EDS_PROPERTY) :]] = text  # an EDS key with no CiA 311 form, kept by our writer
+            return True
         if value is None:
             if name.startswith("CO_"):
                 self.ctx.warning("XDD007", f"property {name}={text!r} cannot be read; kept as text", element)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..eds.report import Report
-from ..model import Commissioning, Device, DummyUsage, RawSection
+from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
 from .context import ReadContext
 from .fragments import fragment, one_line
 from .objects import ObjectReader
@@ -58,6 +58,13 @@ _COMMISSIONING = {
 
 
 def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: bool | None = None) -> Device:
+    return read_with_context(data, file, node_id, dcf)[0]
+
+
+def read_with_context(
+    data: bytes, file: str = "", node_id: int | None = None, dcf: bool | None = None
+) -> tuple[Device, ReadContext]:
+    """The device, and where each of its parts is written (for the preserving writer)."""
     report = Report(file)
     device = Device(source=file, file_format="xdd")
     device.diagnostics = report.diagnostics  # the report keeps adding to this list
@@ -66,8 +73,11 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
         root = parse(data)
     except XmlRefused as refused:
         report.error(refused.code, str(refused), *ctx.positions.at(refused.offset))
-        return device
+        device._original = data  # so writing it back unchanged gives these bytes, never an empty device
+        return device, ctx
     _Document(ctx, device).read(root)
+    if any(var.canopennode for obj in device.objects.values() for var in (obj, *obj.subs.values())):
+        device.dialect = Dialect.CANOPENNODE  # as in the EDS CANopenEditor exports from such a project
     if dcf is not None:
         device.is_dcf = dcf
     elif file.lower().endswith(".xdc") or device.commissioning is not None:
@@ -75,7 +85,7 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
     if node_id is not None:
         device.node_id = node_id
     device._original = data
-    return device
+    return device, ctx
 
 
 def parse_number(text: str) -> int | None:

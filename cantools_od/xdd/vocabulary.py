@@ -82,6 +82,9 @@ OBJECT_ATTRIBUTES = {
     "uniqueIDRef": "",
 }
 
+EDS_PROPERTY = "EDS:"
+"""Prefix of a `property` name that holds an EDS key CiA 311 has no attribute for (`EDS:Factor`)."""
+
 CANOPENNODE_PROPERTIES = (
     "CO_storageGroup",
     "CO_countLabel",

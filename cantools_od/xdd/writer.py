@@ -1,0 +1,177 @@
+"""Writes a device as XDD/XDC: over the bytes it was read from where it can, else canonically.
+
+The preserving writer reads the original again and compares: an unchanged
+device gives the original bytes back; a changed value of an object or
+sub-object is written into the attribute that held it (or added to its
+CANopenObject), leaving every other byte alone. The result is read back and
+must describe the device; other changes fall back to the canonical layout.
+"""
+
+from __future__ import annotations
+
+from xml.sax.saxutils import quoteattr
+
+from ..eds.format import format_value
+from ..model import AccessType, Device, Dialect, Object, Origin, Variable
+from .canonical import canonical_xml, pdo_mapping_text
+from .context import ReadContext
+from .locations import attribute_spans
+from .reader import read_with_context
+from .safe import Element
+from .vocabulary import ACCESS_NAME, ELEMENT_OF_TYPE
+
+_KEYS = {
+    "name": ("ParameterName", "name"),
+    "object_type": ("ObjectType", "objectType"),
+    "data_type": ("DataType", "dataType"),
+    "access": ("AccessType", "accessType"),
+    "default": ("DefaultValue", "defaultValue"),
+    "low_limit": ("LowLimit", "lowLimit"),
+    "high_limit": ("HighLimit", "highLimit"),
+    "pdo_mapping": ("PDOMapping", "PDOmapping"),
+    "obj_flags": ("ObjFlags", "objFlags"),
+    "sub_number": ("SubNumber", "subNumber"),
+    "parameter_value": ("ParameterValue", "actualValue"),
+    "denotation": ("Denotation", "denotation"),
+}
+_VALUE_ELEMENTS = ("defaultValue", "actualValue", "minValue", "maxValue")
+
+Edit = tuple[int, int, bytes]
+_REFUSED = ("XDD001", "XDD002", "XDD003", "XDD004")
+
+
+class _Unsupported(Exception):
+    """A change this writer cannot make in place."""
+
+
+def dumps_xml(device: Device, xdc: bool = False, preserve: bool = True) -> bytes:
+    if xdc and not device.is_dcf and device.node_id is None:
+        raise ValueError("an XDD becomes an XDC for one node: give its node-ID")
+    original = device._original
+    if original is not None and any(d.code in _REFUSED for d in device.diagnostics):
+        return original  # not read as a device description: never replaced by what little was read
+    if preserve and original is not None and device.file_format == "xdd" and xdc == device.is_dcf:
+        kept = _preserve(device, original)
+        if kept is not None:
+            return kept
+    return canonical_xml(device, xdc).encode("utf-8")
+
+
+def _preserve(device: Device, original: bytes) -> bytes | None:
+    before, ctx = read_with_context(original, device.source, dcf=device.is_dcf)
+    target = device.content()
+    if before.content() == target:
+        return original
+    try:
+        edits = _edits(before, device, ctx)
+    except _Unsupported:
+        return None
+    out = bytearray(original)
+    for start, end, text in sorted(edits, reverse=True):
+        out[start:end] = text
+    result = bytes(out)
+    check = read_with_context(result, device.source, dcf=device.is_dcf)[0]
+    return result if check.content() == target else None
+
+
+def _edits(before: Device, after: Device, ctx: ReadContext) -> list[Edit]:
+    old, new = before.content(), after.content()
+    if {k: v for k, v in old.items() if k != "objects"} != {k: v for k, v in new.items() if k != "objects"}:
+        raise _Unsupported
+    if before.objects.keys() != after.objects.keys():
+        raise _Unsupported
+    edits: list[Edit] = []
+    for index, obj in after.objects.items():
+        was = before.objects[index]
+        if was.subs.keys() != obj.subs.keys():
+            raise _Unsupported
+        pairs: list[tuple[Variable, Variable]] = [(was, obj), *((was.subs[i], s) for i, s in obj.subs.items())]
+        for old_var, new_var in pairs:
+            edits += _var_edits(after, obj, old_var, new_var, ctx)
+    return edits
+
+
+def _var_edits(device: Device, owner: Object, old: Variable, new: Variable, ctx: ReadContext) -> list[Edit]:
+    unchanged = old.model_dump(exclude={"origin", "subs", *_KEYS}) == new.model_dump(exclude={"origin", "subs", *_KEYS})
+    if not unchanged or old.origin is None:
+        raise _Unsupported
+    edits: list[Edit] = []
+    inserted: list[str] = []
+    for field, (key, attr) in _KEYS.items():
+        if getattr(old, field, None) == getattr(new, field, None):
+            continue
+        text = _text(device, owner, new, field)
+        edits += _edit(ctx, old.origin, key, attr, text, inserted)
+    if inserted:
+        element = ctx.elements[id(old.origin)]
+        tail = element.content_start - (
+            2 if ctx.data[element.content_start - 2 : element.content_start] == b"/>" else 1
+        )
+        while ctx.data[tail - 1 : tail].isspace():
+            tail -= 1
+        edits.append((tail, tail, "".join(inserted).encode("utf-8")))
+    return edits
+
+
+def _edit(ctx: ReadContext, origin: Origin, key: str, attr: str, text: str | None, inserted: list[str]) -> list[Edit]:
+    bound = ctx.marks.get(id(origin), {}).get(key)
+    if bound is None:
+        if text is not None:
+            inserted.append(f" {attr}={quoteattr(text)}")
+        return []
+    element, where = bound
+    if where is None:
+        return _element_edit(ctx, origin, element, key, attr, text, inserted)
+    start, value_start, value_end = attribute_spans(ctx.data, element)[where]
+    if text is None:
+        if element.local in _VALUE_ELEMENTS:
+            return [_remove_element(ctx.data, element)]
+        begin = start
+        while ctx.data[begin - 1 : begin].isspace():
+            begin -= 1
+        return [(begin, value_end + 1, b"")]
+    if where == "access":
+        text = ACCESS_NAME.get(AccessType(text)) if text in AccessType.__members__.values() else None
+        if text is None:
+            raise _Unsupported
+    return [(value_start, value_end, quoteattr(text)[1:-1].encode("utf-8"))]
+
+
+def _element_edit(
+    ctx: ReadContext, origin: Origin, element: Element, key: str, attr: str, text: str | None, inserted: list[str]
+) -> list[Edit]:
+    if key != "DataType" or text is None:
+        raise _Unsupported
+    name = ELEMENT_OF_TYPE.get(int(text, 16))
+    if name is None:
+        inserted.append(f" {attr}={quoteattr(text)}")  # the object's dataType wins over the parameter's element
+        return []
+    start = element.start + 1 + len(element.name) - len(element.local)
+    return [(start, start + len(element.local), name.encode("ascii"))]
+
+
+def _remove_element(data: bytes, element: Element) -> Edit:
+    begin = element.start
+    while data[begin - 1 : begin] in (b" ", b"\t"):
+        begin -= 1
+    end = element.end
+    if data[begin - 1 : begin] == b"\n" and data[end : end + 1] in (b"\n", b"\r"):
+        begin -= 1
+    return (begin, end, b"")
+
+
+def _text(device: Device, owner: Object, var: Variable, field: str) -> str | None:
+    value = getattr(var, field, None)
+    if value is None:
+        return None
+    if field in ("default", "low_limit", "high_limit", "parameter_value"):
+        return format_value(value, device.entry_type(var, owner), Dialect.CIA306, as_written=True)
+    if field == "access":
+        return str(value.value)
+    if field == "pdo_mapping":
+        return pdo_mapping_text(var)
+    if field in ("data_type", "obj_flags"):
+        return f"{value:04X}"
+    if field == "object_type":
+        return str(int(value))
+    return str(value)

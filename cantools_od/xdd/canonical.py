@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from xml.sax.saxutils import escape, quoteattr
 
 from ..eds.format import format_value
-from ..model import AccessType, CanopenNodeInfo, Device, Dialect, Object, ObjectKind, Variable
+from ..model import AccessType, CanopenNodeInfo, Commissioning, Device, Dialect, Object, ObjectKind, Variable
 from .fragments import restore
 from .reader import RAW_PREFIX
 from .vocabulary import ACCESS_NAME, EDS_PROPERTY, ELEMENT_OF_TYPE, NS_1_1, XSI
@@ -376,9 +376,11 @@ def _management(out: _Out, device: Device, xdc: bool) -> None:
     master += [(k[22:], v) for k, v in extra.items() if k.startswith("CANopenMasterFeatures.")]
     out.add(3, "<NetworkManagement>")
     out.add(4, f"<CANopenGeneralFeatures{_attrs(general)} />")
-    if "CANopenMasterFeatures" in extra or any(v is not None for _, v in master):
+    if any(v is not None for _, v in master):
         out.add(4, f"<CANopenMasterFeatures{_attrs(master)} />")
     commissioning = device.commissioning
+    if xdc and commissioning is None and device.node_id is not None:
+        commissioning = Commissioning(node_id=device.node_id)  # an XDC made for one node
     if xdc and commissioning is not None:
         pairs = [(name, getattr(commissioning, field)) for name, field in _COMMISSIONING]
         pairs = [(k, f"{v} Kbps" if k == "actualBaudRate" and v is not None else v) for k, v in pairs]

@@ -15,7 +15,7 @@ from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
 from .context import ReadContext
 from .fragments import fragment, one_line
 from .objects import ObjectReader
-from .safe import Element, XmlRefused, parse
+from .safe import Element, XmlRefused, parse, utf8_form
 from .vocabulary import KNOWN_ELEMENTS, NAMESPACES, XSI
 
 RAW_PREFIX = "XDD."
@@ -47,6 +47,18 @@ _FEATURES = {
     "bootUpSlave": ("simple_boot_up_slave", "SimpleBootUpSlave", bool),
     "bootUpMaster": ("simple_boot_up_master", "SimpleBootUpMaster", bool),
 }
+# CiA 311's defaults for the attributes of these elements, which hold when the element is present.
+_FEATURE_DEFAULTS: dict[str, dict[str, object]] = {
+    "CANopenGeneralFeatures": {
+        "groupMessaging": False,
+        "dynamicChannels": 0,
+        "bootUpSlave": False,
+        "layerSettingServiceSlave": False,
+        "nrOfRxPDO": 0,
+        "nrOfTxPDO": 0,
+    },
+    "CANopenMasterFeatures": {"bootUpMaster": False},
+}
 _COMMISSIONING = {
     "nodeID": ("node_id", "NodeID", int),
     "nodeName": ("node_name", "NodeName", str),
@@ -68,9 +80,9 @@ def read_with_context(
     report = Report(file)
     device = Device(source=file, file_format="xdd")
     device.diagnostics = report.diagnostics  # the report keeps adding to this list
-    ctx = ReadContext(data, file, report)
+    ctx = ReadContext(utf8_form(data), file, report)
     try:
-        root = parse(data)
+        root = parse(ctx.data)
     except XmlRefused as refused:
         report.error(refused.code, str(refused), *ctx.positions.at(refused.offset))
         device._original = data  # so writing it back unchanged gives these bytes, never an empty device
@@ -324,8 +336,9 @@ class _Document:
                 continue
             setattr(info, spec[0], value)
             self.ctx.mark(info.origin, spec[1], element, attr)
-        if not element.attrs:
-            info.extra[f"{element.local}"] = ""
+        for attr, value in _FEATURE_DEFAULTS.get(element.local, {}).items():
+            if attr not in element.attrs:
+                setattr(info, _FEATURES[attr][0], value)  # the schema's default for an absent attribute
 
     def _commissioning(self, element: Element) -> None:
         origin = self.ctx.origin(element)

@@ -10,6 +10,7 @@ span in the input, which the locations and the preserving writer build on.
 from __future__ import annotations
 
 import io
+import re
 from dataclasses import dataclass, field
 from xml.sax import SAXException, handler
 from xml.sax.xmlreader import AttributesImpl, InputSource
@@ -124,6 +125,18 @@ class _Builder(handler.ContentHandler):
             self.texts[-1].append(content)
 
 
+def utf8_form(data: bytes) -> bytes:
+    """UTF-16 input as UTF-8, so byte offsets and the scanning of tags work on one encoding."""
+    if data[:2] not in (b"\xff\xfe", b"\xfe\xff"):
+        return data
+    try:
+        text = data.decode("utf-16")
+    except UnicodeDecodeError:
+        return data
+    text = re.sub(r"""^(<\?xml[^>]*encoding\s*=\s*)(["'])[^"']*\2""", r"\1\2utf-8\2", text)
+    return text.encode("utf-8")
+
+
 def tag_end(data: bytes, start: int) -> int:
     """The offset just after the `>` closing the tag that starts at `start`, skipping quoted values."""
     quote = 0
@@ -158,6 +171,8 @@ def parse(data: bytes) -> Element:
         raise XmlRefused("XDD002", _refusal(error), builder._offset()) from None
     except SAXException as error:
         raise XmlRefused("XDD001", f"not well-formed XML: {error.getMessage()}", _error_offset(reader)) from None
+    except (LookupError, ValueError) as error:  # an encoding expat does not know
+        raise XmlRefused("XDD001", f"not readable XML: {error}", 0) from None
     if builder.root is None:
         raise XmlRefused("XDD001", "not well-formed XML: no root element")
     return builder.root

@@ -12,7 +12,7 @@ from __future__ import annotations
 from xml.sax.saxutils import quoteattr
 
 from ..eds.format import format_value
-from ..model import AccessType, Device, Dialect, Object, Origin, Variable
+from ..model import AccessType, Device, Dialect, NodeIdExpr, Object, Origin, Variable
 from .canonical import canonical_xml, pdo_mapping_text
 from .context import ReadContext
 from .locations import attribute_spans
@@ -59,8 +59,8 @@ def dumps_xml(device: Device, xdc: bool = False, preserve: bool = True) -> bytes
 
 def _preserve(device: Device, original: bytes) -> bytes | None:
     before, ctx = read_with_context(original, device.source, dcf=device.is_dcf)
-    target = device.content()
-    if before.content() == target:
+    target = _spelled(device)
+    if _spelled(before) == target:
         return original
     try:
         edits = _edits(before, device, ctx)
@@ -71,7 +71,23 @@ def _preserve(device: Device, original: bytes) -> bytes | None:
         out[start:end] = text
     result = bytes(out)
     check = read_with_context(result, device.source, dcf=device.is_dcf)[0]
-    return result if check.content() == target else None
+    return result if _spelled(check) == target else None
+
+
+def _spelled(device: Device) -> object:
+    """The device's content, with `$NODEID` formulas as spelled (a respelling is a change to write)."""
+    data = device.model_dump(mode="json", exclude={"diagnostics", "source", "dialect", "file_format"})
+    return _without_origins(data)
+
+
+def _without_origins(data: object) -> object:
+    if isinstance(data, dict):
+        if "nodeid" in data and not data.get("text"):  # made in code: written in the canonical spelling
+            return {**data, "text": NodeIdExpr(offset=data["nodeid"]).canonical()}
+        return {key: _without_origins(value) for key, value in data.items() if key != "origin"}
+    if isinstance(data, list):
+        return [_without_origins(item) for item in data]
+    return data
 
 
 def _edits(before: Device, after: Device, ctx: ReadContext) -> list[Edit]:
@@ -98,7 +114,8 @@ def _var_edits(device: Device, owner: Object, old: Variable, new: Variable, ctx:
     edits: list[Edit] = []
     inserted: list[str] = []
     for field, (key, attr) in _KEYS.items():
-        if getattr(old, field, None) == getattr(new, field, None):
+        was, now = getattr(old, field, None), getattr(new, field, None)
+        if was == now and not (isinstance(now, NodeIdExpr) and isinstance(was, NodeIdExpr) and was.text != now.text):
             continue
         text = _text(device, owner, new, field)
         edits += _edit(ctx, old.origin, key, attr, text, inserted)

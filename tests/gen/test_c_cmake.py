@@ -127,3 +127,37 @@ def test_library_with_include_output_dir_and_more_targets(tmp_path: Path) -> Non
     assert {"io_device.c", "io_device.h"} <= names and any(n.endswith(".md") for n in names)
     run([str(build / "app")], tmp_path)  # exits 0: the library's include folder and CAN FD reached the app
     assert_nothing_to_do(run(["cmake", "--build", str(build)], tmp_path), "Ninja")
+
+
+XDD_PROJECT = """
+cmake_minimum_required(VERSION 3.20)
+project(xdd_firmware LANGUAGES C)
+include("${CANTOOLS_OD_CMAKE_DIR}/cantools_od.cmake")
+add_executable(app app.c)
+cantools_od_generate(app XDD "${XDD}" NAME demo)
+"""
+
+XDD_APP = """
+#include "demo.h"
+int main(void) { return DEMO_OBJECT_COUNT > 0u && DEMO_DEVICE_TYPE_INDEX == 0x1000u ? 0 : 1; }
+"""
+
+
+def test_xdd_as_the_input(tmp_path: Path) -> None:
+    """cantools_od_generate(... XDD <file>): CANopenDemo's demoDevice.xdd builds into a firmware."""
+    tool("cmake")
+    tool("gcc")
+    tool("ninja")
+    xdd = ROOT.parent / "shared" / "third_party" / "CANopenDemo-demo" / "demoDevice.xdd"
+    if not xdd.is_file():
+        pytest.skip("../shared is absent")
+    source, build = tmp_path / "source", tmp_path / "build"
+    source.mkdir()
+    (source / "CMakeLists.txt").write_text(XDD_PROJECT, encoding="utf-8")
+    (source / "app.c").write_text(XDD_APP, encoding="utf-8")
+    args = cmake_args()
+    folder = args[0].split("=", 1)[1]
+    run(["cmake", "-S", str(source), "-B", str(build), "-G", "Ninja", f"-DCANTOOLS_OD_CMAKE_DIR={folder}",
+         f"-DXDD={xdd}", *args[1:]], tmp_path)  # fmt: skip
+    assert "Generating demo.h and demo.c from demoDevice.xdd" in run(["cmake", "--build", str(build)], tmp_path)
+    run([str(build / "app")], tmp_path)

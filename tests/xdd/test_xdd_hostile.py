@@ -108,3 +108,12 @@ def test_mutated_xdd_never_raises(data: st.DataObject) -> None:
         text = text[:at] + insert + text[at + cut :]
     device = api.loads(text.encode(), source="m.xdd")
     api.dumps(device, "json")
+
+
+def test_utf16_file_is_read_and_unknown_encoding_refused() -> None:
+    text = document(MANDATORY).replace('encoding="utf-8"', 'encoding="utf-16"')
+    device = api.loads(text.encode("utf-16"), source="wide.xdd")
+    assert device.diagnostics == [] and set(device.objects) == {0x1000, 0x1001, 0x1018}
+    assert device.objects[0x1001].origin is not None and device.objects[0x1001].origin.line > 1
+    odd = api.loads(document(MANDATORY).replace('encoding="utf-8"', 'encoding="klingon"'))
+    assert [d.code for d in odd.diagnostics] == ["XDD001"]

@@ -58,7 +58,7 @@ class ObjectReader:
         self.ctx = ctx
         self.device = device
         self.parameters = parameters
-        self.pending: list[_Pending] = []
+        self.pending: dict[tuple[int, str], _Pending] = {}  # by (id(var), field): a later statement replaces
         self.used: set[str] = set()
 
     def read_list(self, object_list: Element) -> list[Element]:
@@ -188,7 +188,7 @@ class ObjectReader:
     def _defer(
         self, var: Variable, owner: Object, field: str, text: str, element: Element, attr: str, key: str
     ) -> None:
-        self.pending.append(_Pending(var, owner, field, text, self.ctx.where(element, attr), key))
+        self.pending[id(var), field] = _Pending(var, owner, field, text, self.ctx.where(element, attr), key)
 
     def _parameter(
         self, var: Variable, owner: Object, parameter: Element, has_subs: bool, extra: dict[str, str]
@@ -219,9 +219,8 @@ class ObjectReader:
         if type_element is not None and "DataType" not in origin.keys:
             self.ctx.mark(origin, "DataType", type_element)
             index = TYPE_ELEMENTS[type_element.local]
-            if index == OCTET_STRING and not any(
-                p.var is var and p.field == "default" and p.text for p in self.pending
-            ):
+            stated = self.pending.get((id(var), "default"))
+            if index == OCTET_STRING and not (stated and stated.text):
                 index = DOMAIN  # CANopenEditor writes DOMAIN as a BITSTRING without a default value
             var.data_type = index
         if not info.is_empty():
@@ -236,7 +235,6 @@ class ObjectReader:
         if local in ("defaultValue", "actualValue") and "value" in child.attrs:
             # A value on the parameter replaces one on the object.
             field = _VALUE_FIELDS[local]
-            self.pending = [p for p in self.pending if not (p.var is var and p.field == field)]
             key = "DefaultValue" if local == "defaultValue" else "ParameterValue"
             self.ctx.mark(origin, key, child, "value")
             self._defer(var, owner, field, child.attrs["value"], child, "value", key)
@@ -269,7 +267,6 @@ class ObjectReader:
         for local, field, key in (("minValue", "low_limit", "LowLimit"), ("maxValue", "high_limit", "HighLimit")):
             bound = ranges[0].child(local)
             if bound is not None and "value" in bound.attrs:
-                self.pending = [p for p in self.pending if not (p.var is var and p.field == field)]
                 self.ctx.mark(origin, key, bound, "value")
                 self._defer(var, owner, field, bound.attrs["value"], bound, "value", key)
         return True
@@ -306,7 +303,7 @@ class ObjectReader:
         var.extra = {**var.extra, f"<{child.local}>": fragment(child)}
 
     def type_values(self) -> None:
-        for pending in self.pending:
+        for pending in self.pending.values():
             var = pending.var
             dtype = self.device.entry_type(var, pending.owner)
             kind = dtype.kind if dtype is not None else None

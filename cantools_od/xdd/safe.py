@@ -89,13 +89,13 @@ class _Builder(handler.ContentHandler):
             raise XmlRefused("XDD003", f"more than {MAX_ELEMENTS} elements; refused", self._offset())
         if len(self.stack) >= MAX_DEPTH:
             raise XmlRefused("XDD003", f"elements nested deeper than {MAX_DEPTH}; refused", self._offset())
-        values = {key: attrs[key] for key in attrs.getNames()}
-        scope = dict(self.scopes[-1])
-        for key, value in values.items():
-            if key == "xmlns":
-                scope[""] = value
-            elif key.startswith("xmlns:"):
-                scope[key[6:]] = value
+        values = dict(attrs.items())
+        scope = self.scopes[-1]
+        declared = [key for key in values if key == "xmlns" or key.startswith("xmlns:")]
+        if declared:
+            scope = dict(scope)
+            for key in declared:
+                scope[key[6:]] = values[key]  # "xmlns" gives the default namespace, the "" prefix
         self.scopes.append(scope)
         prefix, _, local = name.rpartition(":")
         start = self._offset()
@@ -137,19 +137,13 @@ def utf8_form(data: bytes) -> bytes:
     return text.encode("utf-8")
 
 
+_TAG = re.compile(rb"""<[^>"']*(?:(?:"[^"]*"|'[^']*')[^>"']*)*>""")
+
+
 def tag_end(data: bytes, start: int) -> int:
     """The offset just after the `>` closing the tag that starts at `start`, skipping quoted values."""
-    quote = 0
-    for offset in range(start, len(data)):
-        byte = data[offset]
-        if quote:
-            if byte == quote:
-                quote = 0
-        elif byte in (0x22, 0x27):
-            quote = byte
-        elif byte == 0x3E:
-            return offset + 1
-    return len(data)
+    match = _TAG.match(data, start)
+    return match.end() if match is not None else len(data)
 
 
 def parse(data: bytes) -> Element:

@@ -11,6 +11,7 @@ output is deterministic and reading it back gives the same text again.
 
 from __future__ import annotations
 
+import re
 from collections import defaultdict
 from collections.abc import Sequence
 from xml.sax.saxutils import escape, quoteattr
@@ -18,10 +19,11 @@ from xml.sax.saxutils import escape, quoteattr
 from ..eds.format import format_value
 from ..model import AccessType, CanopenNodeInfo, Commissioning, Device, Dialect, Object, ObjectKind, Variable
 from .fragments import restore
-from .reader import RAW_PREFIX
-from .vocabulary import ACCESS_NAME, EDS_PROPERTY, ELEMENT_OF_TYPE, NS_1_1, XSI
+from .reader import FEATURE_DEFAULTS, RAW_PREFIX
+from .vocabulary import ACCESS_NAME, EDS_PROPERTY, ELEMENT_OF_TYPE, NS_1_1, XSI, standard_header
 
 _TEXT = {"\n": "&#10;", "\r": "&#13;"}
+_ILLEGAL = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
 _FILE_ATTRIBUTES = (
     ("fileName", "file_name"),
     ("fileCreator", "created_by"),
@@ -63,7 +65,16 @@ _HANDLED_EXTRA = ("Description", "label", "dataTypeIDRef", "access", "PDOmapping
 def _attr(value: object) -> str:
     if isinstance(value, bool):
         return '"true"' if value else '"false"'
-    return quoteattr(str(value), _TEXT)
+    return quoteattr(_legal(str(value)), _TEXT)
+
+
+def _legal(text: str) -> str:
+    """Text without the characters XML 1.0 cannot hold (control characters), which an EDS name may have."""
+    return _ILLEGAL.sub("\ufffd", text)
+
+
+def _text(text: str) -> str:
+    return escape(_legal(text), _TEXT)
 
 
 def _attrs(pairs: Sequence[tuple[str, object]]) -> str:
@@ -100,25 +111,11 @@ def canonical_xml(device: Device, xdc: bool = False) -> str:
     return "\n".join(out.lines) + "\n"
 
 
-def _header(out: _Out, kind: str, identification: str) -> None:
-    if out.raw.get(f"{kind}"):
-        headers = [t for t in out.raw[kind] if t.startswith("<ProfileHeader")]
-        if headers:
-            out.raw[kind].remove(headers[0])
-            out.add(2, headers[0])
-            return
-    out.add(2, '<ProfileHeader xmlns="">')
-    out.add(3, f"<ProfileIdentification>{identification}</ProfileIdentification>")
-    out.add(3, "<ProfileRevision>1.1</ProfileRevision>")
-    out.add(3, "<ProfileName />")
-    out.add(3, "<ProfileSource />")
-    out.add(3, f"<ProfileClassID>{kind}</ProfileClassID>")
-    out.add(3, "<ISO15745Reference>")
-    out.add(4, "<ISO15745Part>1</ISO15745Part>")
-    out.add(4, "<ISO15745Edition>1</ISO15745Edition>")
-    out.add(4, "<ProfileTechnology>CANopen</ProfileTechnology>")
-    out.add(3, "</ISO15745Reference>")
-    out.add(2, "</ProfileHeader>")
+def _header(out: _Out, kind: str) -> None:
+    kept = [text for text in out.raw.get(kind, []) if text.startswith("<ProfileHeader")]
+    if kept:
+        out.raw[kind].remove(kept[0])
+    out.add(2, kept[0] if kept else standard_header(kind))
 
 
 def _body_attributes(device: Device) -> str:
@@ -131,7 +128,7 @@ def _body_attributes(device: Device) -> str:
 
 def _device_profile(out: _Out, device: Device) -> None:
     out.add(1, "<ISO15745Profile>")
-    _header(out, "Device", "CANopen device profile")
+    _header(out, "Device")
     attributes = f'xsi:type="q1:ProfileBody_Device_CANopen"{_body_attributes(device)}'
     out.add(2, f'<ProfileBody xmlns:q1="{NS_1_1}" {attributes} xmlns="">')
     _identity(out, device)
@@ -169,9 +166,9 @@ def _identity(out: _Out, device: Device) -> None:
         kept = info.extra.get(f"DeviceIdentity.{element}")
         text = value if value is not None else kept
         if text is not None:
-            out.add(4, f"<q1:{element}>{escape(text, _TEXT)}</q1:{element}>")
+            out.add(4, f"<q1:{element}>{_text(text)}</q1:{element}>")
     if device.file_info.description is not None:
-        description = escape(restore(device.file_info.description), _TEXT)
+        description = _text(restore(device.file_info.description))
         out.add(4, f'<q1:productText><description lang="en">{description}</description></q1:productText>')
     out.kept(4, "Device.DeviceIdentity")
     out.add(3, "</q1:DeviceIdentity>")
@@ -213,9 +210,9 @@ def _parameter(out: _Out, device: Device, var: Variable, owner: Object, unique: 
         pairs[1] = ("access", var.extra["access"])
     pairs += [(key[10:], value) for key, value in var.extra.items() if key.startswith("parameter@")]
     out.add(5, f"<q1:parameter{_attrs(pairs)}>")
-    out.add(6, f'<label lang="en">{escape(restore(var.extra.get("label", var.name)), _TEXT)}</label>')
+    out.add(6, f'<label lang="en">{_text(restore(var.extra.get("label", var.name)))}</label>')
     if "Description" in var.extra:
-        out.add(6, f'<description lang="en">{escape(restore(var.extra["Description"]), _TEXT)}</description>')
+        out.add(6, f'<description lang="en">{_text(restore(var.extra["Description"]))}</description>')
     if var is owner and owner.has_subs:
         kind = "ARR" if owner.kind is ObjectKind.ARRAY else "REC"
         out.add(6, f'<q1:dataTypeIDRef uniqueIDRef="UID_{kind}_{owner.index:04X}" />')
@@ -224,7 +221,7 @@ def _parameter(out: _Out, device: Device, var: Variable, owner: Object, unique: 
     elif "dataTypeIDRef" in var.extra:
         out.add(6, f"<q1:dataTypeIDRef uniqueIDRef={_attr(var.extra['dataTypeIDRef'])} />")
     if var.denotation is not None:
-        out.add(6, f'<q1:denotation><label lang="en">{escape(var.denotation, _TEXT)}</label></q1:denotation>')
+        out.add(6, f'<q1:denotation><label lang="en">{_text(var.denotation)}</label></q1:denotation>')
     for element, value in (("actualValue", var.parameter_value), ("defaultValue", var.default)):
         if value is not None:
             out.add(6, f"<q1:{element} value={_attr(_value(device, var, owner, value))} />")
@@ -302,7 +299,7 @@ def _object_attributes(var: Variable, unique: str) -> list[tuple[str, object]]:
 
 def _network_profile(out: _Out, device: Device, xdc: bool) -> None:
     out.add(1, "<ISO15745Profile>")
-    _header(out, "CommunicationNetwork", "CANopen communication network profile")
+    _header(out, "CommunicationNetwork")
     attributes = f'xsi:type="q2:ProfileBody_CommunicationNetwork_CANopen"{_body_attributes(device)}'
     out.add(2, f'<ProfileBody xmlns:q2="{NS_1_1}" {attributes} xmlns="">')
     out.add(3, "<ApplicationLayers>")
@@ -367,16 +364,22 @@ def _transport(out: _Out, device: Device) -> None:
     out.add(3, "</TransportLayers>")
 
 
+def _stated(value: object, default: object) -> object:
+    return default if value is None else value
+
+
 def _management(out: _Out, device: Device, xdc: bool) -> None:
     info = device.device_info
     extra = info.extra
-    general = [(name, getattr(info, field)) for name, field in _GENERAL]
+    # CiA 311's defaults are written out: the text then reads back to the device it was written from.
+    defaults = FEATURE_DEFAULTS["CANopenGeneralFeatures"]
+    general = [(name, _stated(getattr(info, field), defaults.get(name))) for name, field in _GENERAL]
     general += [(k[23:], v) for k, v in extra.items() if k.startswith("CANopenGeneralFeatures.")]
     master: list[tuple[str, object]] = [("bootUpMaster", info.simple_boot_up_master)]
     master += [(k[22:], v) for k, v in extra.items() if k.startswith("CANopenMasterFeatures.")]
     out.add(3, "<NetworkManagement>")
     out.add(4, f"<CANopenGeneralFeatures{_attrs(general)} />")
-    if any(v is not None for _, v in master):
+    if any(value is not None for _, value in master):  # a device that states nothing of a master has none
         out.add(4, f"<CANopenMasterFeatures{_attrs(master)} />")
     commissioning = device.commissioning
     if xdc and commissioning is None and device.node_id is not None:

@@ -16,7 +16,7 @@ from .context import ReadContext
 from .fragments import fragment, one_line
 from .objects import ObjectReader
 from .safe import Element, XmlRefused, parse, utf8_form
-from .vocabulary import KNOWN_ELEMENTS, NAMESPACES, XSI
+from .vocabulary import KNOWN_ELEMENTS, NAMESPACES, XSI, standard_header
 
 RAW_PREFIX = "XDD."
 
@@ -48,7 +48,7 @@ _FEATURES = {
     "bootUpMaster": ("simple_boot_up_master", "SimpleBootUpMaster", bool),
 }
 # CiA 311's defaults for the attributes of these elements, which hold when the element is present.
-_FEATURE_DEFAULTS: dict[str, dict[str, object]] = {
+FEATURE_DEFAULTS: dict[str, dict[str, object]] = {
     "CANopenGeneralFeatures": {
         "groupMessaging": False,
         "dynamicChannels": 0,
@@ -184,8 +184,11 @@ class _Document:
     def _raw(self, element: Element, path: str) -> None:
         if element.local not in KNOWN_ELEMENTS:
             self.ctx.warning("XDD010", f"unknown element <{element.local}>; kept", element)
+        text = fragment(element)
+        if element.local == "ProfileHeader" and text == standard_header(path):
+            return  # the header every CANopen profile has: the writers write it again
         name = f"{RAW_PREFIX}{path}.{element.local}" if path else f"{RAW_PREFIX}{element.local}"
-        section = RawSection(name=name, entries={"xml": fragment(element)}, origin=self.ctx.origin(element))
+        section = RawSection(name=name, entries={"xml": text}, origin=self.ctx.origin(element))
         self.device.other_sections.append(section)
 
     def _file_info(self, bodies: list[Element]) -> None:
@@ -336,7 +339,7 @@ class _Document:
                 continue
             setattr(info, spec[0], value)
             self.ctx.mark(info.origin, spec[1], element, attr)
-        for attr, value in _FEATURE_DEFAULTS.get(element.local, {}).items():
+        for attr, value in FEATURE_DEFAULTS.get(element.local, {}).items():
             if attr not in element.attrs:
                 setattr(info, _FEATURES[attr][0], value)  # the schema's default for an absent attribute
 

@@ -207,3 +207,15 @@ KNOWN_ELEMENTS = frozenset(
         "deviceCommissioning",
     ]
 ) | frozenset(TYPE_ELEMENTS)
+
+
+def standard_header(kind: str) -> str:
+    """The ProfileHeader of a CANopen profile (`Device` or `CommunicationNetwork`), as one line of XML."""
+    identification = "CANopen device profile" if kind == "Device" else "CANopen communication network profile"
+    return (
+        f'<ProfileHeader xmlns=""><ProfileIdentification>{identification}</ProfileIdentification>'
+        "<ProfileRevision>1.1</ProfileRevision><ProfileName /><ProfileSource />"
+        f"<ProfileClassID>{kind}</ProfileClassID><ISO15745Reference><ISO15745Part>1</ISO15745Part>"
+        "<ISO15745Edition>1</ISO15745Edition><ProfileTechnology>CANopen</ProfileTechnology>"
+        "</ISO15745Reference></ProfileHeader>"
+    )

@@ -7,6 +7,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from hypothesis import given, settings
+from test_properties import devices
 from xddkit import MANDATORY, document, xdd_params
 
 from cantools_od import api
@@ -106,3 +108,19 @@ def test_xdc_needs_a_node_id() -> None:
     device = api.loads(document(MANDATORY))
     with pytest.raises(ValueError, match="node-ID"):
         api.dumps(device, "xdc")
+
+
+@settings(max_examples=100, deadline=None)
+@given(devices())
+def test_any_device_written_as_xdd_reads_back(device: Device) -> None:
+    xml = api.dumps(device, "xdd", "canonical")
+    back = api.loads(xml, source="generated.xdd")
+    assert back.diagnostics == []
+    assert api.dumps(back, "xdd", "canonical") == xml
+    assert back.content()["objects"] == device.content()["objects"]
+
+
+def test_control_characters_in_names_stay_well_formed() -> None:
+    device = api.loads("[2000]\nParameterName=Bell\x07Name\nDataType=0x0005\nAccessType=ro\n")
+    back = api.loads(api.dumps(device, "xdd"))
+    assert back.diagnostics == [] and back.objects[0x2000].name == "Bell\ufffdName"

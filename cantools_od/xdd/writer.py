@@ -9,10 +9,10 @@ must describe the device; other changes fall back to the canonical layout.
 
 from __future__ import annotations
 
-from xml.sax.saxutils import quoteattr
+from xml.sax.saxutils import escape, quoteattr
 
 from ..eds.format import format_value
-from ..model import AccessType, Device, Dialect, NodeIdExpr, Object, Origin, Variable
+from ..model import AccessType, Device, DeviceInfo, Dialect, NodeIdExpr, Object, Origin, Variable
 from .canonical import canonical_xml, pdo_mapping_text
 from .context import ReadContext
 from .locations import attribute_spans
@@ -35,6 +35,24 @@ _KEYS = {
     "denotation": ("Denotation", "denotation"),
 }
 _VALUE_ELEMENTS = ("defaultValue", "actualValue", "minValue", "maxValue")
+_EDITABLE = ("objects", "device_info")
+# DeviceInfo fields the reader marks where they are written: model field → EDS key.
+_INFO_KEYS = {
+    "vendor_name": "VendorName",
+    "vendor_number": "VendorNumber",
+    "product_name": "ProductName",
+    "product_number": "ProductNumber",
+    "revision_number": "RevisionNumber",
+    "order_code": "OrderCode",
+    "granularity": "Granularity",
+    "nr_of_rx_pdo": "NrOfRXPDO",
+    "nr_of_tx_pdo": "NrOfTXPDO",
+    "lss_supported": "LSS_Supported",
+    "group_messaging": "GroupMessaging",
+    "dynamic_channels_supported": "DynamicChannelsSupported",
+    "simple_boot_up_slave": "SimpleBootUpSlave",
+    "simple_boot_up_master": "SimpleBootUpMaster",
+}
 
 Edit = tuple[int, int, bytes]
 _REFUSED = ("XDD001", "XDD002", "XDD003", "XDD004")
@@ -92,11 +110,11 @@ def _without_origins(data: object) -> object:
 
 def _edits(before: Device, after: Device, ctx: ReadContext) -> list[Edit]:
     old, new = before.content(), after.content()
-    if {k: v for k, v in old.items() if k != "objects"} != {k: v for k, v in new.items() if k != "objects"}:
+    if {k: v for k, v in old.items() if k not in _EDITABLE} != {k: v for k, v in new.items() if k not in _EDITABLE}:
         raise _Unsupported
     if before.objects.keys() != after.objects.keys():
         raise _Unsupported
-    edits: list[Edit] = []
+    edits = _device_info_edits(before.device_info, after.device_info, ctx)
     for index, obj in after.objects.items():
         was = before.objects[index]
         if was.subs.keys() != obj.subs.keys():
@@ -104,6 +122,33 @@ def _edits(before: Device, after: Device, ctx: ReadContext) -> list[Edit]:
         pairs: list[tuple[Variable, Variable]] = [(was, obj), *((was.subs[i], s) for i, s in obj.subs.items())]
         for old_var, new_var in pairs:
             edits += _var_edits(after, obj, old_var, new_var, ctx)
+    return edits
+
+
+def _device_info_edits(old: DeviceInfo, new: DeviceInfo, ctx: ReadContext) -> list[Edit]:
+    """Identity elements and NMT feature attributes, where the file states them."""
+    if old.model_dump(exclude={"origin", *_INFO_KEYS}) != new.model_dump(exclude={"origin", *_INFO_KEYS}):
+        raise _Unsupported
+    edits: list[Edit] = []
+    for field, key in _INFO_KEYS.items():
+        value = getattr(new, field)
+        if getattr(old, field) == value:
+            continue
+        bound = ctx.marks.get(id(old.origin), {}).get(key) if old.origin is not None else None
+        if bound is None or value is None:
+            raise _Unsupported
+        element, attr = bound
+        if isinstance(value, bool):
+            text = "true" if value else "false"
+        elif isinstance(value, int) and attr is None:
+            text = f"0x{value:08X}"
+        else:
+            text = str(value)
+        if attr is None:
+            edits.append((element.content_start, element.content_end, escape(text).encode("utf-8")))
+        else:
+            _, start, end = attribute_spans(ctx.data, element)[attr]
+            edits.append((start, end, quoteattr(text)[1:-1].encode("utf-8")))
     return edits
 
 

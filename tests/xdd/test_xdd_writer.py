@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import difflib
+import subprocess
 from pathlib import Path
 from typing import Any
 
@@ -14,6 +15,8 @@ from xddkit import MANDATORY, document, xdd_params
 from cantools_od import api
 from cantools_od.model import AccessType, Device, ObjectKind
 from cantools_od.xdd.eds_form import eds_form
+
+from support import cli_command
 
 
 def _fmt(device: Device) -> Any:
@@ -124,3 +127,13 @@ def test_control_characters_in_names_stay_well_formed() -> None:
     device = api.loads("[2000]\nParameterName=Bell\x07Name\nDataType=0x0005\nAccessType=ro\n")
     back = api.loads(api.dumps(device, "xdd"))
     assert back.diagnostics == [] and back.objects[0x2000].name == "Bell\ufffdName"
+
+
+def test_identity_fix_edits_the_element_text(tmp_path: Path) -> None:
+    """lint --fix sets VendorNumber from 1018h sub1 (EDS040): only the vendorID element's text changes."""
+    text = document(MANDATORY).replace("<vendorID>0x00000123</vendorID>", "<vendorID>0x00000999</vendorID>")
+    path = tmp_path / "dev.xdd"
+    path.write_text(text)
+    result = subprocess.run([*cli_command(), "lint", "--fix", "--select", "EDS040", "dev.xdd"], cwd=tmp_path)
+    assert result.returncode == 0
+    assert path.read_text() == text.replace("0x00000999", "0x00000123")

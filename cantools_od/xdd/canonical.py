@@ -210,7 +210,8 @@ def _parameter(out: _Out, device: Device, var: Variable, owner: Object, unique: 
         pairs[1] = ("access", var.extra["access"])
     pairs += [(key[10:], value) for key, value in var.extra.items() if key.startswith("parameter@")]
     out.add(5, f"<q1:parameter{_attrs(pairs)}>")
-    out.add(6, f'<label lang="en">{_text(restore(var.extra.get("label", var.name)))}</label>')
+    label = restore(var.extra["label"]) if "label" in var.extra else var.name  # only kept labels are escaped
+    out.add(6, f'<label lang="en">{_text(label)}</label>')
     if "Description" in var.extra:
         out.add(6, f'<description lang="en">{_text(restore(var.extra["Description"]))}</description>')
     if var is owner and owner.has_subs:

@@ -24,11 +24,13 @@ class Family:
     module: str  # the module of cantools_od.lint that declares the family's codes
     title: str
     refs: str = ""  # the sections of the standards the family checks
+    eds_examples: bool = True  # its examples are EDS fragments that lint runs (not XML, tables or commands)
 
 
 # Families in the order the linter runs them; each is imported explicitly by `load()`.
 FAMILIES: dict[str, Family] = {
     "reader": Family("reader", "Reported while reading an EDS/DCF", "CiA 306 §4 (file structure, value syntax §4.3)"),
+    "xdd": Family("xdd", "Reported while reading an XDD/XDC", "CiA 311", eds_examples=False),
     "syntax": Family("syntax", "File structure: sections, keys, lines", "CiA 306 §4, [Comments] §4.6.5"),
     "objects": Family("objects", "Object and sub-object sections", "CiA 306 §4.6.3; CiA 301 data types"),
     "dcf": Family("dcf", "DCF additions and the module concept", "CiA 306 §5, §6"),
@@ -47,9 +49,9 @@ FAMILIES: dict[str, Family] = {
     "cobid": Family("cobid", "COB-IDs and PDO communication parameters", "CiA 301 §7.2, §7.3, §7.5.2.35/37"),
     "network": Family("network", "Several nodes of one network (lint --network)", "CiA 301 §7.2, §7.3"),
     "portability": Family("portability", "What peer tools read differently (dialects)", "CiA 306 §4"),
-    "import": Family("tool", "Reported by import-table"),
-    "gen": Family("tool", "Reported by gen"),
-    "lint": Family("tool", "Reported by the linter about itself"),
+    "import": Family("tool", "Reported by import-table", eds_examples=False),
+    "gen": Family("tool", "Reported by gen", eds_examples=False),
+    "lint": Family("tool", "Reported by the linter about itself", eds_examples=False),
 }
 
 # code -> kebab-case name, per family.
@@ -64,6 +66,19 @@ NAMES: dict[str, dict[str, str]] = {
         "EDS102": "unclosed-section-header",
         "EDS103": "sub-object-without-object",
         "EDS104": "bad-compact-section",
+    },
+    "xdd": {
+        "XDD001": "xml-not-well-formed",
+        "XDD002": "xml-entities-or-external-references",
+        "XDD003": "xml-too-large-or-deep",
+        "XDD004": "not-cia-311",
+        "XDD005": "cia-311-namespace",
+        "XDD006": "required-attribute-missing",
+        "XDD007": "unreadable-value",
+        "XDD008": "duplicate-index-or-unique-id",
+        "XDD009": "unique-id-ref-dangling",
+        "XDD010": "unknown-element",
+        "XDD011": "unknown-attribute",
     },
     "syntax": {
         "EDS001": "line-too-long",

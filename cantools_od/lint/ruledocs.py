@@ -20,8 +20,8 @@ by code, prefix or family name. Each example is run through `lint` inside a mini
 """
 
 
-def _block(text: str) -> list[str]:
-    return ["```ini", *text.splitlines(), "```"]
+def _block(text: str, language: str = "ini") -> list[str]:
+    return [f"```{language}", *text.splitlines(), "```"]
 
 
 def _failing(code: Code) -> tuple[list[str], str | None]:
@@ -29,6 +29,8 @@ def _failing(code: Code) -> tuple[list[str], str | None]:
     example = code.rule.example
     if not example:
         return [], None
+    if not FAMILIES[code.family].eds_examples:
+        return ["Example:", "", *_block(example, "text"), ""], None
     text, findings = run(example)
     mine = [f for f in findings if f.code == code.code]
     lines = sorted({n for f in mine if (n := fragment_line(example, text, f.location.line)) is not None})

@@ -149,10 +149,12 @@ def _keyed(
 
 
 def _kept_empty(section: Section, key: str, style: _Style) -> bool:
-    """A key the source had with no value is written back empty (only in canonical output); a key whose
-    value could not be read is in `extra` and written from there."""
+    """A key the source had with no value (or a commented key without one) is written back empty, in its
+    place (only in canonical output); a key whose value could not be read is in `extra`, written from there."""
     return (
-        not style.as_written and section.origin is not None and key in section.origin.keys and key not in section.extra
+        not style.as_written
+        and key not in section.extra
+        and (key in section.comments or (section.origin is not None and key in section.origin.keys))
     )
 
 

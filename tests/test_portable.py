@@ -32,6 +32,7 @@ CASES = [
     ("real32-integer-limit-beyond-precision", "0x0008", "HighLimit=2147483647\nDefaultValue=0\nPDOMapping=0"),
     ("real64-zero", "0x0011", "DefaultValue=0\nPDOMapping=0"),
     ("decimal-unsigned", "0x0007", "DefaultValue=1000\nPDOMapping=0"),
+    ("time-of-day-as-one-integer", "0x000C", "DefaultValue=123456789\nPDOMapping=0"),
     ("signed-decimal-limits", "0x0003", "LowLimit=-100\nHighLimit=100\nDefaultValue=-5\nPDOMapping=0"),
 ]
 

@@ -139,7 +139,7 @@ def format_value(
     if isinstance(value, bytes):
         return value.hex().upper()
     if isinstance(value, TimeValue):
-        return f"{value.days} {value.ms}"
+        return _time(value, hint)
     if dialect is Dialect.LELY and dtype is not None and dtype.kind is ValueKind.STRING:
         return quote(value)
     return value
@@ -165,3 +165,15 @@ def _as_real(number: int, bits: int) -> float | None:
         return float(struct.unpack("<f", struct.pack("<f", number))[0]) if bits == 32 else float(number)
     except (OverflowError, struct.error):
         return None
+
+
+def _time(value: TimeValue, hint: str | None) -> str:
+    """TIME_OF_DAY / TIME_DIFFERENCE: `days ms`, unless the author wrote the bit pattern as one integer and it
+    still reads as this value; python-canopen reads `days ms` as the two numbers' digits run together."""
+    if hint is not None and (_DEC_TEXT.match(hint) or _HEX_TEXT.fullmatch(hint.strip())):
+        try:
+            if TimeValue.from_bits(int(hint, 0)) == value:
+                return hint.strip()
+        except ValueError:
+            pass
+    return f"{value.days} {value.ms}"

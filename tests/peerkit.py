@@ -298,6 +298,7 @@ class PeerCounts:
     files: int = 0
     original_accepted: int = 0
     output_accepted: int = 0
+    lost: int = 0  # read the original, not the output
     files_differing: int = 0
     fields_differing: int = 0
     fields_fixed: int = 0
@@ -311,6 +312,7 @@ def tally(results: list[FileResult]) -> list[PeerCounts]:
             row.files += 1
             row.original_accepted += j.before is None
             row.output_accepted += j.after is None
+            row.lost += j.before is None and j.after is not None
             row.files_differing += bool(j.differences)
             row.fields_differing += len(j.differences)
             row.fields_fixed += len(j.intended)
@@ -318,7 +320,17 @@ def tally(results: list[FileResult]) -> list[PeerCounts]:
 
 
 def table(rows: list[PeerCounts]) -> str:
-    head = ("output", "peer", "files", "original read", "output read", "files differing", "fields differing", "fixed")
+    head = (
+        "output",
+        "peer",
+        "files",
+        "original read",
+        "output read",
+        "read before, not after",
+        "files differing",
+        "fields differing",
+        "fixed",
+    )
     body = [
         (
             r.output,
@@ -326,6 +338,7 @@ def table(rows: list[PeerCounts]) -> str:
             r.files,
             r.original_accepted,
             r.output_accepted,
+            r.lost,
             r.files_differing,
             r.fields_differing,
             r.fields_fixed if r.output == "lint-fix" and r.peer != "dcfchk" else "",

@@ -12,7 +12,7 @@ from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects,
 from .decode import decode_as
 from .dialect import detect_dialect
 from .format import CANONICAL, IntStyle, format_key, format_value
-from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
+from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec, Kind
 
 
 class Hints:
@@ -134,7 +134,7 @@ def _keyed(
 ) -> OutSection:
     entries: dict[str, str] = {}
     data: dict[str, Any] = dict(model.__dict__)
-    for spelling, attr, _ in table.values():
+    for spelling, attr, kind in table.values():
         if attr.startswith("baud_rates."):
             value: Any = data["baud_rates"].get(int(attr.split(".")[1]))
         else:
@@ -143,19 +143,21 @@ def _keyed(
             entries[spelling] = format_key(
                 spelling, value, style.ints.radix(spelling), style.hints.text(model, spelling)
             )
-        elif _kept_empty(model, spelling, style):
+        elif _kept_empty(model, spelling, kind, style):
             entries[spelling] = ""
     return _with_extra(name, entries, model)
 
 
-def _kept_empty(section: Section, key: str, style: _Style) -> bool:
-    """A key the source had with no value (or a commented key without one) is written back empty, in its
-    place (only in canonical output); a key whose value could not be read is in `extra`, written from there."""
-    return (
-        not style.as_written
-        and key not in section.extra
-        and (key in section.comments or (section.origin is not None and key in section.origin.keys))
-    )
+def _kept_empty(section: Section, key: str, kind: Kind, style: _Style) -> bool:
+    """Whether canonical output writes `key=` for a key with no value. Kept in place: a commented key,
+    and an empty typed value or AccessType the source had (python-canopen reads `DefaultValue=` as `''`
+    or `b''`, not as absent). Dropped: other empty numbers and booleans, which no peer reads a value
+    from (python-canopen fails on `int('')`). A key whose value could not be read is in `extra`."""
+    if style.as_written or key in section.extra:
+        return False
+    if key in section.comments:
+        return True
+    return kind in (Kind.VALUE, Kind.ACCESS) and section.origin is not None and key in section.origin.keys
 
 
 def _variable_entries(device: Device, var: Variable, owner: Object, style: _Style) -> dict[str, str]:
@@ -173,7 +175,7 @@ def _variable_entries(device: Device, var: Variable, owner: Object, style: _Styl
         ):
             value = device.resolve(var.default)  # a DCF states the value for its node-ID
         if value is None:
-            if _kept_empty(var, spelling, style):
+            if _kept_empty(var, spelling, kind, style):
                 entries[spelling] = ""
             continue
         radix, hint = style.ints.radix(spelling), style.hints.text(var, spelling)

@@ -17,7 +17,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
-from peerkit import judge_all, table, tally
+from peermatrix import judge_all, table, tally
 
 from cantools_od.api import dumps, format_for, load
 from cantools_od.eds.format import IntStyle, Radix

@@ -8,7 +8,7 @@ wrongly by CiA 306 are listed below, each with why, and there it must read ours 
 from __future__ import annotations
 
 import pytest
-from peerkit import Difference, FileResult, Judgement, judge_all
+from peermatrix import Difference, FileResult, Judgement, judge_all
 
 from support import corpus_files
 

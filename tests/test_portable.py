@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 from lintkit import BASE
-from peerkit import NODE_ID, canopen_reading, dcfchk_verdict, differences
+from peermatrix import NODE_ID, canopen_reading, dcfchk_verdict, differences
 
 from cantools_od import dumps, loads
 

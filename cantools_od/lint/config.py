@@ -18,6 +18,7 @@ from typing import Any
 
 from ..eds.format import IntStyle, Radix
 from ..eds.keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, Kind
+from .codes import matches
 
 KEYS = ("select", "ignore", "per-file-ignores", "integer-radix")
 """Every key `[tool.cantools-od]` may hold."""
@@ -29,8 +30,6 @@ INTEGER_KEYS = tuple(
     for spelling, _, kind in table.values()
     if kind in (Kind.VALUE, Kind.INT, Kind.OBJECT_TYPE)
 )
-
-from .codes import matches
 
 
 @dataclass(frozen=True)

@@ -5,7 +5,8 @@ from __future__ import annotations
 import importlib
 from functools import cache
 
-FAMILIES = ("reader", "syntax", "objects", "dcf", "objlists", "values", "identity", "pdo", "cobid", "portability")
+FAMILIES = ("reader", "syntax", "objects", "dcf", "objlists", "values", "identity", "pdo", "cobid", "portability",
+            "canopennode")  # fmt: skip
 
 
 @cache

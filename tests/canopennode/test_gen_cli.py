@@ -1,0 +1,57 @@
+"""`gen -t canopennode` as a user runs it: names, --explain, overrides, refusals, depfile, determinism."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+from cnokit import DEMO, WARNINGS, gen, includes, run, stack
+
+
+def demo_copy(tmp_path: Path) -> Path:
+    stack()
+    source = tmp_path / "demoDevice.eds"
+    shutil.copyfile(DEMO / "demoDevice.eds", source)
+    return source
+
+
+def test_default_name_explain_and_byte_identical_reruns(tmp_path: Path) -> None:
+    source = demo_copy(tmp_path)
+    result = gen(source, tmp_path / "out", "--explain")
+    assert result.returncode == 0, result.stderr
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["OD.c", "OD.h"]
+    assert "inferred: 1017h: count label HB_PROD inferred from the index (OD_CNT_HB_PROD)" in result.stderr
+    assert "inferred: 1200sub1: default $NODEID+0x600 stored as 0x600" in result.stderr
+    first = {p.name: p.read_bytes() for p in (tmp_path / "out").iterdir()}
+    mtimes = {p.name: p.stat().st_mtime_ns for p in (tmp_path / "out").iterdir()}
+    assert gen(source, tmp_path / "out").returncode == 0
+    assert {p.name: p.read_bytes() for p in (tmp_path / "out").iterdir()} == first
+    assert {p.name: p.stat().st_mtime_ns for p in (tmp_path / "out").iterdir()} == mtimes  # not rewritten
+    assert b"201" not in first["OD.h"].split(b"*/")[0]  # no date in the banner
+
+
+def test_override_file_sets_string_capacity_and_is_a_dependency(tmp_path: Path) -> None:
+    source = demo_copy(tmp_path)
+    (tmp_path / "demoDevice.canopennode.toml").write_text(
+        "[2121sub2]\nstring_length_min = 1000\n[2122]\ndisabled = true\n"
+    )
+    result = gen(source, tmp_path / "out", "--name", "OD1", "--depfile", str(tmp_path / "od.d"), "--explain")
+    assert result.returncode == 0, result.stderr
+    header = (tmp_path / "out" / "OD1.h").read_text()
+    assert "char stringLong[1001];" in header and "#define OD1_CNT_NMT 1" in header
+    assert "H2122" not in header
+    assert "set: 2121sub2: string_length_min = 1000" in result.stderr
+    assert "demoDevice.canopennode.toml" in (tmp_path / "od.d").read_text()
+    run(["gcc", *WARNINGS, *includes(tmp_path / "out"), "-c", "OD1.c", "-o", "od1.o"], cwd=tmp_path / "out")
+
+
+def test_refusals_write_nothing(tmp_path: Path) -> None:
+    source = demo_copy(tmp_path)
+    (tmp_path / "demoDevice.canopennode.toml").write_text("[2121sub2]\nstring_length_min = 'long'\n")
+    bad = gen(source, tmp_path / "out")
+    assert bad.returncode == 2 and "string_length_min: expected an integer" in bad.stderr
+    (tmp_path / "demoDevice.canopennode.toml").write_text("[1017]\ndisabled = true\n")
+    refused = gen(source, tmp_path / "out")
+    assert refused.returncode == 1
+    assert "CNO005" in refused.stderr and "nothing generated" in refused.stderr
+    assert not (tmp_path / "out").exists()

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 import click
 
@@ -17,6 +18,7 @@ def prepare_canopennode(device: Device, file: str, explain: bool) -> list[str]:
     the canopennode profile finds errors.
     """
     from ..canopennode_overrides import apply_overrides, override_file_for
+    from ..lint import load_selection
     from ..lint.canopennode import profile_findings
     from ..lint.runner import has_errors
     from ..views.canopennode import build_node_view
@@ -29,7 +31,12 @@ def prepare_canopennode(device: Device, file: str, explain: bool) -> list[str]:
         except (OSError, ValueError) as error:
             click.echo(f"{path}: error: {getattr(error, 'strerror', None) or error}", err=True)
             sys.exit(EXIT_USAGE)
-    findings = profile_findings(device, device.node_id)
+    try:  # the project's [tool.cantools-od] ignore applies, e.g. for a stack built without EM history
+        ignore = load_selection(Path.cwd()).ignore
+    except ValueError as error:
+        click.echo(f"error: configuration: {error}", err=True)
+        sys.exit(EXIT_USAGE)
+    findings = profile_findings(device, device.node_id, ignore)
     for finding in findings:
         click.echo(finding.format(), err=True)
     if has_errors(findings):

@@ -138,18 +138,30 @@ def array_shape(ctx: Context) -> Iterator[Finding]:
 CANopen.c stops the build with `#error` unless OD_CNT_NMT, OD_CNT_EM and OD_CNT_HB_PROD are 1,
 and (with the emergency producer, on by default) OD_CNT_EM_PROD is 1: the device needs 1000h
 (device type, NMT), 1001h (error register, EM), 1014h (COB-ID EMCY, EM_PROD) and 1017h
-(producer heartbeat time, HB_PROD). Fix: add the object; the count label follows from its
-index (or set `count_label` in the .canopennode.toml file).""",
+(producer heartbeat time, HB_PROD); with the heartbeat consumer (on by default) CANopen.c sizes
+its tables by OD_CNT_ARR_1016 even when it is 0, so 1016h (HB_CONS) must be there too. The
+emergency history (on by default) needs 1003h, SYNC also reads 1006h (communication cycle
+period), SRDO 13FEh and 13FFh, without a fallback. These follow the stack's default CO_CONFIG_*;
+a build that turns a function off can ignore the code in `[tool.cantools-od]`. Fix: add the
+object; the count label follows from its index (or set `count_label` in the .canopennode.toml
+file).""",
     "[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001\n; no 1014h, no 1017h",
 )
 def required_counts(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
     if ctx.options.profile != PROFILE:
         return
-    for label, index in (("NMT", 0x1000), ("EM", 0x1001), ("EM_PROD", 0x1014), ("HB_PROD", 0x1017)):
+    required = (("NMT", 0x1000), ("EM", 0x1001), ("EM_PROD", 0x1014), ("HB_CONS", 0x1016), ("HB_PROD", 0x1017))
+    for label, index in required:
         if label not in counts:
-            message = f"no object counts as {label} (usually {index:04X}h): CANopen.c requires OD_CNT_{label} 1"
+            message = f"no object counts as {label} (usually {index:04X}h): CANopen.c needs OD_CNT_{label}"
             yield ctx.report("CNO005", message, ctx.at(ctx.device.mandatory_objects or ctx.device.file_info))
+    present = {obj.index for obj in _objects(ctx)}
+    for label, needed in (("EM", (0x1003,)), ("SYNC", (0x1006,)), ("SRDO", (0x13FE, 0x13FF))):
+        for index in needed if label in counts else ():
+            if index not in present:
+                message = f"{counts[label][0].index:04X}h counts as {label}, so CANopen.c also uses {index:04X}h"
+                yield ctx.report("CNO005", message, ctx.at(counts[label][0]))
 
 
 def _counts(ctx: Context) -> dict[str, list[Object]]:
@@ -168,7 +180,7 @@ def _counts(ctx: Context) -> dict[str, list[Object]]:
     """
 CANopen.c checks the OD_CNT_* counts with `#error` (NMT, EM, HB_PROD exactly 1; SYNC, TIME,
 HB_CONS, GFC at most 1; SDO servers 1-128, clients up to 128; RPDO and TPDO up to 512; SRDO up
-to 64) and needs 1 to 127 heartbeat consumers in 1016h. Its init loops also walk the OD list by
+to 64) and needs 1016h to be an ARRAY of 1 to 127 heartbeat consumers. Its init loops also walk the OD list by
 position: SDO server i is 1200h+i, RPDO i is 1400h+i with mapping 1600h+i, TPDO i 1800h+i with
 1A00h+i, SRDO i 1301h+i with 1381h+i, so these must be consecutive and paired. Count labels and
 storage groups become C names, so they must be C identifiers. Fix: correct the objects or the
@@ -188,7 +200,10 @@ def count_limits(ctx: Context) -> Iterator[Finding]:
             yield ctx.report("CNO006", f"{len(objects)} objects count as {label}; the stack allows {limit}", where)
         yield from _consecutive(ctx, label, objects)
     heartbeat = ctx.device.objects.get(0x1016)
-    if "HB_CONS" in counts and heartbeat is not None and not 1 <= len(heartbeat.subs) - 1 <= 127:
+    if "HB_CONS" in counts and heartbeat is not None and heartbeat.kind is not ObjectKind.ARRAY:
+        yield ctx.report("CNO006", "1016h must be an ARRAY: the stack sizes its consumers by OD_CNT_ARR_1016",
+                         ctx.at(heartbeat))  # fmt: skip
+    elif "HB_CONS" in counts and heartbeat is not None and not 1 <= len(heartbeat.subs) - 1 <= 127:
         yield ctx.report("CNO006", f"1016h has {len(heartbeat.subs) - 1} consumers; the stack allows 1 to 127",
                          ctx.at(heartbeat))  # fmt: skip
     for obj in _objects(ctx):
@@ -291,10 +306,10 @@ def string_without_memory(ctx: Context) -> Iterator[Finding]:
                 yield ctx.report("CNO009", message, ctx.at(ctx.section_of(obj, var), "DefaultValue"))
 
 
-def profile_findings(device: Device, node_id: int | None = None) -> list[Finding]:
-    """Only the canopennode rules, for gen -t canopennode."""
+def profile_findings(device: Device, node_id: int | None = None, ignore: tuple[str, ...] = ()) -> list[Finding]:
+    """Only the canopennode rules, for gen -t canopennode; `ignore` as in [tool.cantools-od]."""
     from .config import Selection
     from .rules import LintOptions
     from .runner import lint
 
-    return lint(device, LintOptions(node_id=node_id, profile=PROFILE), Selection(select=("CNO",)))
+    return lint(device, LintOptions(node_id=node_id, profile=PROFILE), Selection(select=("CNO",), ignore=ignore))

@@ -127,3 +127,12 @@ CONSECUTIVE: dict[str, tuple[int, int | None]] = {
 
 # COB-IDs to which the stack adds the node-ID itself: only there is `$NODEID+n` stored as n harmlessly.
 NODEID_AREAS: tuple[tuple[int, int], ...] = ((0x1014, 0x1014), (0x1200, 0x12FF), (0x1400, 0x15FF), (0x1800, 0x19FF))
+
+# Communication objects the stack extends with its own read/write functions (EM history, storage):
+# like CANopenEditor, an entry of theirs without a default gets no memory.
+_STACK_EXTENDED = frozenset({0x1003, 0x1010, 0x1011})
+
+
+def stack_reads_at_init(index: int) -> bool:
+    """Whether CO_CANopenInit reads the object's value from the OD: it then needs memory even without a default."""
+    return 0x1000 <= index <= 0x1FFF and index not in _STACK_EXTENDED

@@ -18,7 +18,9 @@ inference below, which `inferences` lists one line each:
 
 Values follow the stack's conventions: `$NODEID+n` is stored as n (the stack adds the node-ID
 to the COB-IDs it manages at run time); an entry without a default gets no memory (`dataOrig`
-NULL, for the application to provide through `OD_extension_init`), as does a DOMAIN; strings
+NULL, for the application to provide through `OD_extension_init`), as does a DOMAIN, except in
+the communication area 1000h-1FFFh, which CO_CANopenInit reads (0 then; 1003h, 1010h and 1011h,
+which the stack extends itself, keep no memory as in CANopenEditor); strings
 reserve max(default length, `string_length_min`) bytes, VISIBLE_STRING one more for the
 terminator; 24/40/48/56-bit integers and TIME types are byte arrays in CANopen byte order.
 """
@@ -45,7 +47,7 @@ from ..model import (
     ValueKind,
     Variable,
 )
-from ..model.canopennode import count_label_for, standard_storage_group
+from ..model.canopennode import count_label_for, stack_reads_at_init, standard_storage_group
 
 VAR, ARR, REC = "VAR", "ARR", "REC"
 _KINDS = {ObjectKind.VAR: VAR, ObjectKind.DOMAIN: VAR, ObjectKind.ARRAY: ARR, ObjectKind.RECORD: REC}
@@ -248,6 +250,9 @@ class _Builder:
         size = length if length is not None else _length(dtype, value, info.string_length_min if info else None)
         held = value_bytes(dtype, value, size)
         textual = dtype.kind in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS)
+        if held is None and size > 0 and not textual and stack_reads_at_init(obj.index):
+            held = bytes(size)
+            self.note(where, "no default value: 0, as CO_CANopenInit reads it from the OD")
         stored = size > 0 and (held is not None or textual)
         if not stored and dtype.index != 0x000F:
             self.note(where, "no default value: no memory in the OD, the application provides it (OD_extension_init)")

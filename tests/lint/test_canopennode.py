@@ -28,6 +28,12 @@ REQUIRED = (
     + var(0x1001, "Error register", 5)
     + var(0x1014, "COB-ID EMCY", 7, "rw", "$NODEID+0x80")
     + var(0x1017, "Producer heartbeat time", 6, "rw")
+    + "[1003]\nParameterName=Pre-defined error field\nObjectType=0x8\nSubNumber=2\n\n"
+    + var(0x1003, "Number of errors", 5, "rw", sub=0)
+    + var(0x1003, "Standard error field", 7, default="", sub=1)
+    + "[1016]\nParameterName=Consumer heartbeat time\nObjectType=0x8\nSubNumber=2\n\n"
+    + var(0x1016, "Highest sub-index supported", 5, default="1", sub=0)
+    + var(0x1016, "Consumer heartbeat time", 7, "rw", sub=1)
 )
 
 
@@ -44,8 +50,11 @@ def test_a_stack_ready_device_passes_and_the_rules_need_the_profile() -> None:
 
 def test_required_objects_missing() -> None:
     found = codes(var(0x1000, "Device type", 7) + var(0x1001, "Error register", 5))
-    assert [c for c, _ in found] == ["CNO005", "CNO005"]
-    assert "EM_PROD" in found[0][1] and "HB_PROD" in found[1][1]
+    assert [c for c, _ in found] == ["CNO005"] * 4
+    assert "EM_PROD" in found[0][1] and "HB_CONS" in found[1][1] and "HB_PROD" in found[2][1]
+    assert found[3][1] == "1001h counts as EM, so CANopen.c also uses 1003h"
+    sync = codes(REQUIRED + var(0x1005, "COB-ID SYNC", 7, "rw", "0x80"))
+    assert sync == [("CNO005", "1005h counts as SYNC, so CANopen.c also uses 1006h")]
 
 
 def test_unsupported_type_and_unstorable_default() -> None:

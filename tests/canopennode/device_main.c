@@ -1,12 +1,23 @@
 /* A host CANopenNode device for the tests: CO_new, CO_CANinit, LSS, CO_CANopenInit and
- * CO_CANopenInitPDO with the generated OD, then ITERATIONS passes of the main loop (1 ms of
- * simulated time each). Exit code 0 and "operational" when every step succeeded. */
+ * CO_CANopenInitPDO with the generated OD, then ITERATIONS passes of the main loop.
+ *
+ * With the blank driver each pass simulates 1 ms and the device starts itself; exit code 0 and
+ * "operational" when every step succeeded. Built with -DDEVICE_TCP and hostcan/CO_driver_tcp.c,
+ * `device ITERATIONS PORT` connects to the test on 127.0.0.1:PORT, runs in real time (about 1 ms
+ * per pass), waits for NMT start like any node, and ends when the test closes the link. */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "CANopen.h"
 #include "OD.h"
 
+#ifdef DEVICE_TCP
+#include <time.h>
+int CO_CANconnect(unsigned port);
+#define NMT_CONTROL 0
+#else
 #define NMT_CONTROL (CO_NMT_STARTUP_TO_OPERATIONAL | CO_NMT_ERR_ON_ERR_REG | CO_ERR_REG_GENERIC_ERR)
+#endif
 
 int
 main(int argc, char** argv) {
@@ -28,9 +39,18 @@ main(int argc, char** argv) {
         printf("CO_new failed\n");
         return 2;
     }
-    CO_CANsetConfigurationMode(NULL);
+    void* canPtr = NULL;
+#ifdef DEVICE_TCP
+    int link = CO_CANconnect(argc > 2 ? (unsigned)strtoul(argv[2], NULL, 10) : 0U);
+    if (link < 0) {
+        printf("cannot connect to the test\n");
+        return 9;
+    }
+    canPtr = (void*)(intptr_t)link;
+#endif
+    CO_CANsetConfigurationMode(canPtr);
     CO_CANmodule_disable(co->CANmodule);
-    CO_ReturnError_t err = CO_CANinit(co, NULL, bitRate);
+    CO_ReturnError_t err = CO_CANinit(co, canPtr, bitRate);
     if (err != CO_ERROR_NO) {
         printf("CO_CANinit: %d\n", err);
         return 3;
@@ -53,6 +73,15 @@ main(int argc, char** argv) {
     }
     CO_CANsetNormalMode(co->CANmodule);
     for (unsigned long i = 0; i < iterations; i++) {
+#ifdef DEVICE_TCP
+        struct timespec pause = {0, 1000000L};
+        nanosleep(&pause, NULL);
+        if (!CO_CANpoll(co->CANmodule)) {
+            printf("link closed after %lu iterations\n", i);
+            CO_delete(co);
+            return 0;
+        }
+#endif
         CO_NMT_reset_cmd_t reset = CO_process(co, false, 1000, NULL);
 #if ((CO_CONFIG_SYNC)&CO_CONFIG_SYNC_ENABLE) != 0
         bool_t syncWas = CO_process_SYNC(co, 1000, NULL);

@@ -49,13 +49,14 @@ def run(command: list[str], cwd: Path | None = None, timeout: float = 120) -> su
     return result
 
 
-def gen(source: Path, outdir: Path, *args: str) -> subprocess.CompletedProcess[str]:
+def gen(source: Path, outdir: Path, *args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
     """`cantools-od gen -t canopennode` as a user runs it."""
     return subprocess.run(
         [*cli_command(), "gen", str(source), "-t", "canopennode", "-o", str(outdir), *args],
         capture_output=True,
         text=True,
         timeout=120,
+        cwd=cwd,
     )
 
 

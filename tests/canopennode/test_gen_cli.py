@@ -55,3 +55,13 @@ def test_refusals_write_nothing(tmp_path: Path) -> None:
     assert refused.returncode == 1
     assert "CNO005" in refused.stderr and "nothing generated" in refused.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_a_project_can_ignore_a_profile_rule_for_a_stack_built_without_that_function(tmp_path: Path) -> None:
+    source = demo_copy(tmp_path)
+    (tmp_path / "demoDevice.canopennode.toml").write_text("[1003]\ndisabled = true\n")
+    refused = gen(source, tmp_path / "out", cwd=tmp_path)
+    assert refused.returncode == 1 and "1001h counts as EM, so CANopen.c also uses 1003h [CNO005]" in refused.stderr
+    (tmp_path / "pyproject.toml").write_text('[tool.cantools-od]\nignore = ["CNO005"]\n')
+    assert gen(source, tmp_path / "out", cwd=tmp_path).returncode == 0
+    assert "#define OD_ENTRY_H1003 " not in (tmp_path / "out" / "OD.h").read_text()

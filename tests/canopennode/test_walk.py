@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from cnokit import DEMO, STACK, Entry, load_accepted, parallel, stack, walk, write_od
 
-from cantools_od.model import AccessType, Device, NodeIdExpr, Object, ObjectKind, Value, Variable
+from cantools_od.model import AccessType, Device, NodeIdExpr, Object, ObjectKind, TimeValue, Value, Variable
 
 from support import corpus_files
 
@@ -36,6 +36,8 @@ def expected_length(dtype_index: int, bits: int | None, value: Value | None) -> 
 def expected_bytes(dtype_index: int, kind: str, value: Value | None, length: int) -> bytes | None:
     if isinstance(value, NodeIdExpr):
         value = value.offset  # CANopenNode adds the node-ID at run time
+    if isinstance(value, TimeValue):  # ms after midnight (28 bits), then days since 1984-01-01
+        return struct.pack("<IH", value.ms & 0x0FFFFFFF, value.days)
     if isinstance(value, str):
         value = value.encode("utf-16-le" if dtype_index == 0x000B else "utf-8")
     if isinstance(value, bytes):

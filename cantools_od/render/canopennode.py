@@ -78,7 +78,7 @@ class Context:
 
 def ctype(entry: NodeEntry) -> tuple[str, str]:
     """The C type of an entry's memory and the array dimension after the name ('' for scalars)."""
-    dtype, kind = entry.data_type, entry.data_type.kind
+    kind = entry.data_type.kind
     if kind is ValueKind.BOOL:
         return "bool_t", ""
     if kind is ValueKind.REAL:
@@ -90,7 +90,6 @@ def ctype(entry: NodeEntry) -> tuple[str, str]:
         return "char", f"[{entry.length + 1}]"
     if kind is ValueKind.UNICODE:
         return "uint16_t", f"[{entry.length // 2 + 1}]"
-    del dtype
     return "uint8_t", f"[{entry.length}]"  # OCTET_STRING, 24/40/48/56-bit integers, TIME types
 
 

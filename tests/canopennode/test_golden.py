@@ -11,6 +11,7 @@ import os
 from pathlib import Path
 
 from cnokit import gen
+
 from support import ROOT
 
 GOLDEN = Path(__file__).resolve().parent / "golden"

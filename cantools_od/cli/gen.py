@@ -54,6 +54,9 @@ def command(
 
     base = name or default_name(file)
     stack_only = set(targets) == {"canopennode"}  # the stack's own names: OD, OD1 (any C identifier)
+    if name and {"c", "canopennode"} <= set(targets):
+        raise click.BadParameter("-t c and -t canopennode would both write NAME.h/NAME.c; run them apart",
+                                 param_hint="--name")  # fmt: skip
     if not (is_identifier(base) or (stack_only and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", base))):
         raise click.BadParameter(f"{base!r} is not a valid identifier", param_hint="--name")
     device = read_device(file, node_id)

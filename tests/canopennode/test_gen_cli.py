@@ -65,3 +65,12 @@ def test_a_project_can_ignore_a_profile_rule_for_a_stack_built_without_that_func
     (tmp_path / "pyproject.toml").write_text('[tool.cantools-od]\nignore = ["CNO005"]\n')
     assert gen(source, tmp_path / "out", cwd=tmp_path).returncode == 0
     assert "#define OD_ENTRY_H1003 " not in (tmp_path / "out" / "OD.h").read_text()
+
+
+def test_one_name_for_the_c_and_canopennode_targets_is_refused(tmp_path: Path) -> None:
+    source = demo_copy(tmp_path)
+    both = gen(source, tmp_path / "out", "-t", "c", "--name", "drive")
+    assert both.returncode == 2 and "would both write NAME.h/NAME.c" in both.stderr
+    assert not (tmp_path / "out").exists()
+    assert gen(source, tmp_path / "out", "-t", "c").returncode == 0  # default names differ: OD.* and demo_device.*
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["OD.c", "OD.h", "demo_device.c", "demo_device.h"]

@@ -5,8 +5,20 @@ from __future__ import annotations
 import importlib
 from functools import cache
 
-FAMILIES = ("reader", "syntax", "objects", "dcf", "objlists", "values", "identity", "pdo", "cobid", "portability",
-            "canopennode")  # fmt: skip
+FAMILIES = (
+    "reader",
+    "xdd",
+    "syntax",
+    "objects",
+    "dcf",
+    "objlists",
+    "values",
+    "identity",
+    "pdo",
+    "cobid",
+    "portability",
+    "canopennode",
+)
 
 
 @cache

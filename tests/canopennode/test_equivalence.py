@@ -89,3 +89,19 @@ def test_canopeneditor_demo_config_macro_breaks_multiple_od_builds_ours_does_not
         result = subprocess.run(command, capture_output=True, text=True, timeout=60)
         assert (result.returncode == 0) is compiles, result.stderr
         assert compiles or "OD_ENTRY_H1280" in result.stderr
+
+
+def test_from_the_projects_themselves_xdd_and_xpd_equal_canopeneditor(tmp_path: Path) -> None:
+    """From demoDevice.xdd and DS301_profile.xpd (the files CANopenEditor generated from), with their
+    CO_storageGroup, CO_countLabel, CO_disabled and CO_stringLengthMin properties: no difference."""
+    stack()
+    pairs = [(DEMO / "demoDevice.xdd", DEMO), (STACK / "example" / "DS301_profile.xpd", STACK / "example")]
+    for n, (source, _) in enumerate(pairs):
+        result = gen(source, tmp_path / f"ours{n}")
+        assert result.returncode == 0, result.stderr
+    jobs = [(tmp_path / f"ours{n}", tmp_path / f"w{n}") for n in range(2)]
+    jobs += [(theirs, tmp_path / f"t{n}") for n, (_, theirs) in enumerate(pairs)]
+    ours_demo, ours_profile, theirs_demo, theirs_profile = parallel(lambda job: walk(*job), jobs)
+    assert differences(ours_demo, theirs_demo) == {}
+    assert differences(ours_profile, theirs_profile) == {}
+    assert names(tmp_path / "ours0" / "OD.h") == names(DEMO / "OD.h")

@@ -15,7 +15,7 @@
 #   NODE_ID     the node-ID that $NODEID stands for (1-127).
 #   OUTPUT_DIR  default: ${CMAKE_CURRENT_BINARY_DIR}/cantools_od
 #   PINS        a pin file of identifiers (`cantools-od ids`); default: <EDS stem>.ids.toml beside
-#               the EDS when it exists.
+#               the EDS, whether it exists yet or not: creating, editing or deleting it regenerates.
 #   CAN_FD      allow PDOs of up to 64 bytes.
 #
 # Call it in the directory that defines <target> (CMake attaches custom commands to targets of the
@@ -24,9 +24,6 @@
 #                           "/usr/bin/python3;-m;cantools_od"; wins when set.
 #   CANTOOLS_OD_EXECUTABLE  (cache) the `cantools-od` console script; searched for next to the
 #                           Python installation this module belongs to first, then on the PATH.
-#
-# With CMake 3.20 or newer (3.7 with Ninja), the generator also writes a depfile, so that a pin file
-# that appears beside the EDS later is tracked as well.
 
 include_guard(GLOBAL)
 
@@ -129,6 +126,22 @@ function(cantools_od_generate target)
     list(APPEND _options --pins "${_pins}")
     list(APPEND _depends "${_pins}")
   endif()
+  get_filename_component(_eds_name "${_eds}" NAME)
+  if(NOT arg_PINS)
+    # The default pin file may not exist yet, and a build step cannot depend on a missing file: a
+    # target run on every build keeps a copy of it in the build folder (empty while there is none),
+    # rewritten only when that changes, and generation depends on the copy.
+    string(REGEX REPLACE "\\.[^./]*$" "" _eds_base "${_eds}")
+    set(_pins_copy "${_work}/pins.ids.toml")
+    add_custom_target("${target}_cantools_od_${_name}_pins"
+      COMMAND "${CMAKE_COMMAND}" "-DPINS=${_eds_base}.ids.toml" "-DCOPY=${_pins_copy}"
+              -P "${_cantools_od_module_dir}/cantools_od_pins.cmake"
+      BYPRODUCTS "${_pins_copy}"
+      COMMENT "Checking ${_eds_name}'s pin file"
+      VERBATIM)
+    add_dependencies("${target}" "${target}_cantools_od_${_name}_pins")
+    list(APPEND _depends "${_pins_copy}")
+  endif()
   list(GET _command 0 _program)
   if(IS_ABSOLUTE "${_program}" AND EXISTS "${_program}" AND NOT CANTOOLS_OD_COMMAND)
     list(APPEND _depends "${_program}") # regenerate after cantools-od is upgraded
@@ -141,17 +154,10 @@ function(cantools_od_generate target)
     set(_scope PUBLIC)
     set(_sources_scope PRIVATE)
   endif()
-  get_filename_component(_eds_name "${_eds}" NAME)
-
   set(_others "${arg_TARGETS}")
   list(REMOVE_ITEM _others c)
   if("c" IN_LIST arg_TARGETS)
     set(_outputs "${_out}/${_name}.h" "${_out}/${_name}.c")
-    set(_depfile "${_work}/c.d")
-    set(_depfile_args)
-    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.20 OR CMAKE_GENERATOR MATCHES "Ninja")
-      set(_depfile_args DEPFILE "${_depfile}")
-    endif()
     # gen rewrites a file only when its content changes. Ninja (restat) then skips what depends on an
     # unchanged file; other build tools would run the generator again and again while the EDS is newer
     # than the outputs, so they get fresh timestamps there.
@@ -161,10 +167,9 @@ function(cantools_od_generate target)
     endif()
     add_custom_command(
       OUTPUT ${_outputs}
-      COMMAND ${_command} gen "${_eds}" -t c ${_options} --depfile "${_depfile}"
+      COMMAND ${_command} gen "${_eds}" -t c ${_options}
       ${_touch}
       DEPENDS ${_depends}
-      ${_depfile_args}
       COMMENT "Generating ${_name}.h and ${_name}.c from ${_eds_name}"
       VERBATIM)
     target_sources("${target}" ${_sources_scope} ${_outputs})

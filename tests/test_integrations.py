@@ -11,6 +11,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
+
 from support import ROOT, cli_command
 
 EDS = ROOT / "eds" / "cia402_drive.eds"

@@ -74,3 +74,25 @@ def test_package_ships_py_typed(tmp_path: Path) -> None:
     )  # fmt: skip
     # With py.typed mypy sees the real return type and rejects the assignment (without it: "missing library stubs").
     assert 'Incompatible types in assignment (expression has type "Device"' in checked.stdout, checked.stdout
+
+
+def test_readme_facts_match_the_code() -> None:
+    """The Python version the README asks for is the one pyproject.toml requires, and every option the
+    README's command table names is one the command's --help offers."""
+    import tomllib
+
+    readme = (ROOT / "README.md").read_text("utf-8")
+    required = tomllib.loads((ROOT / "pyproject.toml").read_text("utf-8"))["project"]["requires-python"]
+    assert required.startswith(">=")
+    assert f"Python {required[2:]}+" in readme
+    rows = [line for line in readme.splitlines() if line.startswith("| `cantools-od ")]
+    assert len(rows) >= 10
+    for row in rows:
+        usage = row.split("`")[1]
+        command = usage.split()[1]
+        if command.startswith("--"):
+            continue
+        helped = subprocess.run([*cli_command(), command, "--help"], capture_output=True, text=True, timeout=60)
+        assert helped.returncode == 0, usage
+        for option in {word.strip("[]|.") for word in usage.split() if word.lstrip("[").startswith("-")}:
+            assert option in helped.stdout, f"README: {usage}: {command} --help has no {option}"

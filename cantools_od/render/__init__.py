@@ -9,7 +9,7 @@ from functools import cache
 import jinja2
 
 from ..resources import resource_dir
-from . import escape
+from . import escape, prose
 
 # target name → module in this package with `render(view) -> dict[str, str]`
 TARGETS = {"c": "c", "rust": "rust", "python": "python", "markdown": "markdown"}
@@ -31,11 +31,13 @@ def environment() -> jinja2.Environment:
         c_comment=escape.c_comment,
         c_string=escape.c_string,
         line_comment=escape.line_comment,
+        rust_doc=escape.rust_doc,
         rust_string=escape.rust_string,
         python_string=escape.python_string,
         md=escape.markdown_text,
         md_cell=escape.markdown_cell,
         hex4=lambda n: f"{n:04X}",
+        count=prose.count,
     )
     return env
 

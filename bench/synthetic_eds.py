@@ -29,7 +29,7 @@ _VAR_TYPES = [  # (data type, default)
     (0x0009, "text"),
 ]
 _ACCESS = ["rw", "ro", "rww", "rwr", "const"]
-_SUB_BYTES = 140  # about what one sub-object section takes
+_SUB_BYTES = 110  # about what one sub-object section takes
 
 
 def _entry(name: str, data_type: int, access: str, default: str, pdo: int) -> str:
@@ -101,7 +101,8 @@ def _communication(mapped: list[tuple[int, int]]) -> str:
 
 def synthetic_eds(size: int) -> bytes:
     """An EDS of about `size` bytes (at least a few kB)."""
-    average_subs = max(4, min(200, size // ((LAST - FIRST + 1) * _SUB_BYTES) + 1))
+    # 60 % of the indices are ARRAY/RECORD: enough sub-objects on average to fit `size` into the index range.
+    average_subs = max(4, min(120, int(size / ((LAST - FIRST + 1) * 0.6 * _SUB_BYTES)) + 3))
     objects: list[str] = []
     indices: list[int] = []
     mapped: list[tuple[int, int]] = []

@@ -68,6 +68,10 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
         if kind is Kind.VALUE:
             collected.deferred[field] = entry
             continue
+        if kind is Kind.STR:
+            # Names repeat across sections ("Highest sub-index supported"): one string for each.
+            collected.fields[field] = report.strings.setdefault(entry.value, entry.value)
+            continue
         try:
             value = convert(entry.value, kind)
         except ValueError as error:

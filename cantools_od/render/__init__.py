@@ -42,6 +42,20 @@ def environment() -> jinja2.Environment:
     return env
 
 
+def render_template(name: str, **context: object) -> str:
+    """A template's text, joined in batches as it is generated: a large object dictionary's output is
+    tens of MB, and holding all of Jinja's small pieces at once would take many times that."""
+    whole: list[str] = []
+    batch: list[str] = []
+    for piece in environment().get_template(name).generate(**context):
+        batch.append(piece)
+        if len(batch) == 4096:
+            whole.append("".join(batch))
+            batch.clear()
+    whole.append("".join(batch))
+    return "".join(whole)
+
+
 def renderer(target: str) -> Renderer:
     module = importlib.import_module(f"{__name__}.{TARGETS[target]}")
     render: Renderer = module.render

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from ..model import DataType, Device, NodeIdExpr, Object, RawValue, TimeValue, ValueKind, Variable
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import environment
+from . import render_template
 from .escape import markdown_cell, markdown_plain, markdown_text
 from .prose import count
 
@@ -27,7 +27,7 @@ VALID_BIT = 0x80000000
 
 
 def render(view: DeviceView) -> dict[str, str]:
-    text = environment().get_template("markdown/reference.md.j2").render(d=_document(view))
+    text = render_template("markdown/reference.md.j2", d=_document(view))
     return {f"{view.name}.md": text}
 
 

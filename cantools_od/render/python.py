@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from ..interop import OdVariable, od_objects
 from ..model import AccessType, Device, NodeIdExpr, ValueKind, standard_type
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import environment
+from . import render_template
 from .prose import count
 from .py_text import (
     doc_text,
@@ -77,7 +77,7 @@ class Property:
 
 
 def render(view: DeviceView) -> dict[str, str]:
-    text = environment().get_template("python/module.py.j2").render(m=_module(view))
+    text = render_template("python/module.py.j2", m=_module(view))
     return {f"{view.name}.py": text}
 
 

@@ -133,13 +133,16 @@ function(cantools_od_generate target)
     # rewritten only when that changes, and generation depends on the copy.
     string(REGEX REPLACE "\\.[^./]*$" "" _eds_base "${_eds}")
     set(_pins_copy "${_work}/pins.ids.toml")
-    add_custom_target("${target}_cantools_od_${_name}_pins"
+    add_custom_target("${target}_cantools_od_${_name}_pins" ALL
       COMMAND "${CMAKE_COMMAND}" "-DPINS=${_eds_base}.ids.toml" "-DCOPY=${_pins_copy}"
               -P "${_cantools_od_module_dir}/cantools_od_pins.cmake"
       BYPRODUCTS "${_pins_copy}"
       COMMENT "Checking ${_eds_name}'s pin file"
       VERBATIM)
-    add_dependencies("${target}" "${target}_cantools_od_${_name}_pins")
+    get_target_property(_target_type "${target}" TYPE)
+    if(NOT _target_type STREQUAL "INTERFACE_LIBRARY" OR NOT CMAKE_VERSION VERSION_LESS 3.19)
+      add_dependencies("${target}" "${target}_cantools_od_${_name}_pins") # also when building only it
+    endif()
     list(APPEND _depends "${_pins_copy}")
   endif()
   list(GET _command 0 _program)

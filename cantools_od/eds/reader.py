@@ -30,7 +30,8 @@ from .decode import decode, utf8_pieces
 from .dialect import DialectEvidence, directive
 from .report import Report
 from .sections import Collected, collect, raw_section
-from .typing import type_entry, type_values
+from .storage import read_storage_groups
+from .typed_values import type_entry, type_values
 from .values import parse_int
 
 _OBJECT_SECTION = re.compile(
@@ -218,6 +219,7 @@ def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str)
     apply_compact_sections(device, build.compact, report)
     expand_compact_pdo(device)
     device.objects = dict(sorted(device.objects.items()))
+    read_storage_groups(device)
     if device.commissioning is not None:
         device.node_id = device.commissioning.node_id
         device.is_dcf = True

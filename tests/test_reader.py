@@ -35,7 +35,7 @@ def test_line_ends(eol: bytes) -> None:
     device = loads(VAR.format(value="7").encode().replace(b"\n", eol))
     assert device.objects[0x2000].default == 7
     assert device.objects[0x2000].origin is not None
-    assert device.objects[0x2000].origin.keys["DefaultValue"][0] == 5
+    assert device.objects[0x2000].origin.value("DefaultValue").line == 5
 
 
 def test_mixed_line_ends_and_bom() -> None:
@@ -242,7 +242,7 @@ def test_origin_of_every_key() -> None:
     device = loads(b"[2000]\n; a comment\nParameterName = Speed\nDataType=0x0006\n", source="f.eds")
     origin = device.objects[0x2000].origin
     assert origin is not None and (origin.file, origin.line) == ("f.eds", 1)
-    assert origin.keys["ParameterName"] == (3, 1, 17)
+    assert origin.where("ParameterName") == (3, 1, 17)
     assert device.objects[0x2000].comments == {"ParameterName": ["; a comment"]}
 
 

@@ -17,7 +17,7 @@
 #   NODE_ID     the node-ID that $NODEID stands for (1-127).
 #   OUTPUT_DIR  default: ${CMAKE_CURRENT_BINARY_DIR}/cantools_od
 #   PINS        a pin file of identifiers (`cantools-od ids`); default: <EDS stem>.ids.toml beside
-#               the EDS when it exists.
+#               the EDS, whether it exists yet or not: creating, editing or deleting it regenerates.
 #   CAN_FD      allow PDOs of up to 64 bytes.
 #   OD_NAME     for the `canopennode` target: the base name of CANopenNode's object dictionary
 #               files and symbols; default OD (OD.h/OD.c, which CANopen.c includes). Like `c`,
@@ -30,9 +30,6 @@
 #                           "/usr/bin/python3;-m;cantools_od"; wins when set.
 #   CANTOOLS_OD_EXECUTABLE  (cache) the `cantools-od` console script; searched for next to the
 #                           Python installation this module belongs to first, then on the PATH.
-#
-# With CMake 3.20 or newer (3.7 with Ninja), the generator also writes a depfile, so that a pin file
-# that appears beside the EDS later is tracked as well.
 
 include_guard(GLOBAL)
 
@@ -142,6 +139,25 @@ function(cantools_od_generate target)
     list(APPEND _options --pins "${_pins}")
     list(APPEND _depends "${_pins}")
   endif()
+  get_filename_component(_eds_name "${_eds}" NAME)
+  if(NOT arg_PINS)
+    # The default pin file may not exist yet, and a build step cannot depend on a missing file: a
+    # target run on every build keeps a copy of it in the build folder (empty while there is none),
+    # rewritten only when that changes, and generation depends on the copy.
+    string(REGEX REPLACE "\\.[^./]*$" "" _eds_base "${_eds}")
+    set(_pins_copy "${_work}/pins.ids.toml")
+    add_custom_target("${target}_cantools_od_${_name}_pins" ALL
+      COMMAND "${CMAKE_COMMAND}" "-DPINS=${_eds_base}.ids.toml" "-DCOPY=${_pins_copy}"
+              -P "${_cantools_od_module_dir}/cantools_od_pins.cmake"
+      BYPRODUCTS "${_pins_copy}"
+      COMMENT "Checking ${_eds_name}'s pin file"
+      VERBATIM)
+    get_target_property(_target_type "${target}" TYPE)
+    if(NOT _target_type STREQUAL "INTERFACE_LIBRARY" OR NOT CMAKE_VERSION VERSION_LESS 3.19)
+      add_dependencies("${target}" "${target}_cantools_od_${_name}_pins") # also when building only it
+    endif()
+    list(APPEND _depends "${_pins_copy}")
+  endif()
   list(GET _command 0 _program)
   if(IS_ABSOLUTE "${_program}" AND EXISTS "${_program}" AND NOT CANTOOLS_OD_COMMAND)
     list(APPEND _depends "${_program}") # regenerate after cantools-od is upgraded
@@ -154,17 +170,10 @@ function(cantools_od_generate target)
     set(_scope PUBLIC)
     set(_sources_scope PRIVATE)
   endif()
-  get_filename_component(_eds_name "${_eds}" NAME)
-
   set(_others "${arg_TARGETS}")
   list(REMOVE_ITEM _others c canopennode)
   if("c" IN_LIST arg_TARGETS)
     set(_outputs "${_out}/${_name}.h" "${_out}/${_name}.c")
-    set(_depfile "${_work}/c.d")
-    set(_depfile_args)
-    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.20 OR CMAKE_GENERATOR MATCHES "Ninja")
-      set(_depfile_args DEPFILE "${_depfile}")
-    endif()
     # gen rewrites a file only when its content changes. Ninja (restat) then skips what depends on an
     # unchanged file; other build tools would run the generator again and again while the EDS is newer
     # than the outputs, so they get fresh timestamps there.
@@ -174,10 +183,9 @@ function(cantools_od_generate target)
     endif()
     add_custom_command(
       OUTPUT ${_outputs}
-      COMMAND ${_command} gen "${_eds}" -t c --name "${_name}" ${_options} --depfile "${_depfile}"
+      COMMAND ${_command} gen "${_eds}" -t c --name "${_name}" ${_options}
       ${_touch}
       DEPENDS ${_depends}
-      ${_depfile_args}
       COMMENT "Generating ${_name}.h and ${_name}.c from ${_eds_name}"
       VERBATIM)
     target_sources("${target}" ${_sources_scope} ${_outputs})

@@ -75,7 +75,7 @@ def apply_compact_sections(device: Device, sections: list[tuple[int, str, ini.In
             continue
         count = collected.fields.get("count")
         if count != len(keys):
-            line, column, _ = collected.origin.keys.get("NrOfEntries", (section.line, 1, 1))
+            line, column, _ = collected.origin.where("NrOfEntries") or (section.line, 1, 1)
             report.error("EDS104", f"[{section.name}]: NrOfEntries={count} but {len(keys)} entries", line, column)
         by_key = {e.key: e for e in section.entries}
         for key in keys:
@@ -109,7 +109,7 @@ def _object_links(device: Device, obj: Object, section: ini.IniSection, report: 
             return
         links.append(target)
     if collected.fields.get("count") != len(links):
-        line, column, _ = collected.origin.keys.get("ObjectLinks", (section.line, 1, 1))
+        line, column, _ = collected.origin.where("ObjectLinks") or (section.line, 1, 1)
         message = f"[{section.name}]: ObjectLinks={collected.fields.get('count')} but {len(links)} entries"
         report.error("EDS104", message, line, column)
     obj.links = links

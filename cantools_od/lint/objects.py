@@ -56,7 +56,7 @@ def missing_keys(ctx: Context) -> Iterator[Finding]:
         for key in _mandatory(obj, subindex is not None):
             if not given(var, key):
                 kind = "a sub-object" if subindex is not None else f"{obj.kind.name}"
-                empty = var.origin is not None and key in var.origin.keys
+                empty = var.origin is not None and var.origin.where(key) is not None
                 message = f"{where(obj, subindex)}: {key} is empty" if empty else f"{where(obj, subindex)}: no {key}"
                 yield ctx.report("EDS020", f"{message}; {kind} needs it", ctx.at(var, key))
 

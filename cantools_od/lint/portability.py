@@ -353,7 +353,7 @@ python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key o
 )
 def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
     for _, label, var in _vars(ctx.device):
-        written = var.origin is not None and "PDOMapping" in var.origin.keys
+        written = var.origin is not None and var.origin.where("PDOMapping") is not None
         invalid = any(keys.normalize(k) == "pdomapping" for k in var.extra)  # the reader reported it
         if written and var.pdo_mapping is None and not invalid:
             message = f"{label} PDOMapping is empty; python-canopen fails on it"

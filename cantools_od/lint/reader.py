@@ -110,7 +110,7 @@ def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:
         if var.origin is None:
             continue
         for key, field in _VALUE_KEYS.items():
-            where = var.origin.keys.get(key)
+            where = var.origin.where(key)
             value = getattr(var, field)
             if where is None or where[0] != diagnostic.location.line or not isinstance(value, NodeIdExpr):
                 continue

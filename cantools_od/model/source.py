@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from enum import StrEnum
 
 from pydantic import BaseModel, ConfigDict
@@ -29,7 +30,9 @@ class Location(BaseModel):
 class Origin(BaseModel):
     """Where a section came from: its header and each key.
 
-    `keys` maps the canonical key name to (line, key column, value column).
+    A key's position is (line, key column, value column). Readers give it in `keys`, or, more
+    compactly, in `layout` relative to the header line: sections written alike share one layout.
+    Look positions up with `where`, `positions`, `key` and `value` rather than in either mapping.
     """
 
     model_config = ConfigDict(defer_build=True)
@@ -38,21 +41,41 @@ class Origin(BaseModel):
     line: int = 0
     column: int = 1
     keys: dict[str, tuple[int, int, int]] = {}
+    """Canonical key name → (line, key column, value column)."""
+    layout: dict[str, tuple[int, int, int]] = {}
+    """Canonical key name → (lines after the header, key column, value column); shared, never edit it."""
     spelled: dict[str, str] = {}
     """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written."""
 
     def header(self) -> Location:
         return Location(file=self.file, line=self.line, column=self.column)
 
+    def where(self, name: str) -> tuple[int, int, int] | None:
+        """The key's (line, key column, value column), None when the section has no such key."""
+        where = self.keys.get(name)
+        if where is not None:
+            return where
+        relative = self.layout.get(name)
+        if relative is None:
+            return None
+        return (self.line + relative[0], relative[1], relative[2])
+
+    def positions(self) -> Iterator[tuple[str, tuple[int, int, int]]]:
+        """Every key with its (line, key column, value column)."""
+        yield from self.keys.items()
+        for name, (offset, key_column, value_column) in self.layout.items():
+            if name not in self.keys:
+                yield name, (self.line + offset, key_column, value_column)
+
     def key(self, name: str) -> Location:
         """The key's line, or the section header when the key is absent."""
-        where = self.keys.get(name)
+        where = self.where(name)
         if where is None:
             return self.header()
         return Location(file=self.file, line=where[0], column=where[1])
 
     def value(self, name: str) -> Location:
-        where = self.keys.get(name)
+        where = self.where(name)
         if where is None:
             return self.header()
         return Location(file=self.file, line=where[0], column=where[2])

@@ -181,7 +181,7 @@ def _entry(device: Device, ids: Identifiers, obj: Object, subindex: int, var: Va
         low_limit=_number(var.low_limit),
         high_limit=_number(var.high_limit),
         implicit=getattr(var, "implicit", False),
-        line=origin.keys.get("ParameterName", (origin.line,))[0] if origin else 0,
+        line=origin.key("ParameterName").line if origin else 0,
     )
 
 

@@ -13,6 +13,7 @@ import pytest
 from pykit import check_markdown, check_markdown_lines, import_file, run_gen
 
 from cantools_od import load, to_canopen
+from cantools_od.render.escape import markdown_text
 
 from support import corpus_files
 
@@ -53,7 +54,9 @@ def _sweep(path: Path, folder: Path, parse: bool) -> str:
         check_markdown_lines(text)
     indices = {index for index, obj in device.objects.items() if obj.kind.name not in ("NULL", "DEFTYPE")}
     for index in indices:
-        assert f"\n### Object {index:04X}h\n" in text and f"](#object-{index:04x}h)" in text
+        shown = markdown_text(device.objects[index].name)
+        heading = f"### Object {index:04X}h: {shown}\n" if shown else f"### Object {index:04X}h\n"
+        assert f"\n{heading}" in text and f"](#object-{index:04x}h" in text
         assert hasattr(module, f"INDEX_{module_identifier(module, index)}")
     return "generated" if result.exit_code == 0 else "generated with errors"
 

@@ -234,7 +234,28 @@ def _object_list(section: ini.IniSection, report: Report) -> ObjectList:
             collected.extra[str(position)] = text
             continue
         entries[position] = index
-    return ObjectList(supported_objects=count, entries=entries, **collected.common())
+    found = ObjectList(supported_objects=count, entries=entries, **collected.common())
+    found._repeats = _repeated_positions(section)
+    return found
+
+
+def _repeated_positions(section: ini.IniSection) -> dict[int, list[tuple[int, int, int]]]:
+    """Positions written more than once: each of their entries as (line, key column, object index)."""
+    written = [entry.key for entry in section.entries]
+    if len(set(written)) == len(written):
+        return {}  # the common case
+    by_position: dict[int, list[tuple[int, int, int]]] = {}
+    for entry in section.entries:
+        key = entry.key
+        if not (key.isdigit() and key == str(int(key)) and int(key) > 0):
+            continue
+        try:
+            index, _ = parse_int(entry.value)
+        except ValueError:
+            continue
+        if isinstance(index, int) and 0 <= index <= 0xFFFF:
+            by_position.setdefault(int(key), []).append((entry.line, entry.key_col, index))
+    return {position: found for position, found in by_position.items() if len(found) > 1}
 
 
 def _dummy_usage(section: ini.IniSection, report: Report) -> DummyUsage:

@@ -39,7 +39,8 @@ class Origin(BaseModel):
     column: int = 1
     keys: dict[str, tuple[int, int, int]] = {}
     spelled: dict[str, str] = {}
-    """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written."""
+    """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written;
+    under "" the section's own name when written otherwise (`DeviceCommissioning`)."""
 
     def header(self) -> Location:
         return Location(file=self.file, line=self.line, column=self.column)

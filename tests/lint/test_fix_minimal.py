@@ -53,7 +53,7 @@ def test_fix_keeps_the_empty_keys_of_the_section_it_edits(tmp_path: Path) -> Non
     source = tmp_path / "in" / "t.eds"
     source.parent.mkdir()
     source.write_text(text)
-    before, after = fix_with_cli(tmp_path, source, "--select", "EDS026")
+    _, after = fix_with_cli(tmp_path, source, "--select", "EDS026")
     assert after.decode() == text.replace("DefaultValue=2", "DefaultValue=3")
 
 

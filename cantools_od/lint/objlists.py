@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterator
+from dataclasses import replace
 
 from ..eds import keys
 from ..eds.preserve import respell
@@ -175,7 +176,13 @@ def _fix_missing(name: str) -> Callable[[Device], None]:
     """
 [MandatoryObjects] lists exactly the objects every CANopen device has: 1000h (device type),
 1001h (error register) and 1018h (identity). Other objects listed there, or one of these three
-listed in another list, make tools misjudge which objects the device must implement.""",
+listed in another list, make tools misjudge which objects the device must implement.
+
+Error when 1000h, 1001h or 1018h is missing from [MandatoryObjects]: a tool that checks the
+mandatory list finds the device incomplete. Warning for another object listed there (often 1017h,
+which CiA 301 makes mandatory only without node guarding): every tool still finds and reads it.
+Fix (unsafe, shown only): move the entry; it renumbers both lists.
+Fixed: `[OptionalObjects]` lists 1017h.""",
     "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1017",
 )
 def mandatory_list(ctx: Context) -> Iterator[Finding]:
@@ -186,7 +193,8 @@ def mandatory_list(ctx: Context) -> Iterator[Finding]:
                 continue  # EDS018
             fix = Fix(f"move 0x{index:04X} to [{target}]", False, _fix_move(name, index, target))
             message = f"[{name}] {position}=0x{index:04X}: belongs in [{target}]"
-            yield ctx.report("EDS013", message, _entry_at(ctx, found, position), fix)
+            finding = ctx.report("EDS013", message, _entry_at(ctx, found, position), fix)
+            yield replace(finding, severity=W) if name == MANDATORY else finding
 
 
 @rule(

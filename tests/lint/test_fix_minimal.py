@@ -3,10 +3,12 @@ into free numbers, and a second `lint` shows the fixed findings gone and no new 
 
 from __future__ import annotations
 
+import bisect
 import difflib
 import re
 import shutil
 import subprocess
+from collections import Counter
 from pathlib import Path
 
 import pytest
@@ -17,14 +19,50 @@ from cantools_od.lint import Finding, lint
 from support import cli_command, corpus_file, corpus_params
 
 
+def _anchors(old: list[str], new: list[str]) -> list[tuple[int, int]]:
+    """Lines that occur once in each text, in an order both agree on (patience diff's anchors)."""
+    once_old, once_new = _unique(old), _unique(new)
+    pairs = sorted((i, once_new[line]) for line, i in once_old.items() if line in once_new)
+    # longest increasing run of new positions (patience sorting)
+    tails: list[int] = []
+    links: list[int | None] = [None] * len(pairs)
+    tops: list[int] = []
+    for n, (_, j) in enumerate(pairs):
+        at = bisect.bisect_left(tails, j)
+        if at == len(tails):
+            tails.append(j)
+            tops.append(n)
+        else:
+            tails[at], tops[at] = j, n
+        links[n] = tops[at - 1] if at else None
+    chain: list[tuple[int, int]] = []
+    k: int | None = tops[-1] if tops else None
+    while k is not None:
+        chain.append(pairs[k])
+        k = links[k]
+    return chain[::-1]
+
+
+def _unique(lines: list[str]) -> dict[str, int]:
+    counts = Counter(lines)
+    return {line: n for n, line in enumerate(lines) if counts[line] == 1}
+
+
 def changed_lines(before: bytes, after: bytes) -> list[int]:
-    """Lines of `before` (from 1) that `after` rewrites or drops; added lines are not counted."""
+    """Lines of `before` (from 1) that `after` rewrites or drops; added lines are not counted.
+
+    A patience diff: unique lines anchor the texts, the short stretches between anchors are compared
+    line by line (a plain SequenceMatcher is quadratic on files of thousands of like lines)."""
     old = before.decode("latin-1").splitlines()
     new = after.decode("latin-1").splitlines()
     changed: list[int] = []
-    for tag, i1, i2, _, _ in difflib.SequenceMatcher(None, old, new, autojunk=False).get_opcodes():
-        if tag in ("replace", "delete"):
-            changed.extend(range(i1 + 1, i2 + 1))
+    start_old = start_new = 0
+    for i, j in [*_anchors(old, new), (len(old), len(new))]:
+        matcher = difflib.SequenceMatcher(None, old[start_old:i], new[start_new:j], autojunk=False)
+        for tag, i1, i2, _, _ in matcher.get_opcodes():
+            if tag in ("replace", "delete"):
+                changed.extend(range(start_old + i1 + 1, start_old + i2 + 1))
+        start_old, start_new = i + 1, j + 1
     return changed
 
 

@@ -204,7 +204,9 @@ what the standard says it may (a consumer heartbeat time, an error history clear
 Warning: communication works, but configuration steps fail or are skipped.
 Fix: none offered (the device's behaviour decides which side is wrong).
 Fixed: `[1018sub1]` with `AccessType=ro`.""",
-    "[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\nAccessType=rw",
+    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
+    "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
+    "AccessType=rw",
 )
 def access_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):

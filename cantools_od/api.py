@@ -11,23 +11,28 @@ from pydantic import ValidationError
 
 from .eds.reader import read_bytes
 from .model import Device
+from .xdd import is_xml
 
-Format = Literal["eds", "dcf", "json"]
+Format = Literal["eds", "dcf", "json", "xdd", "xdc"]
 Style = Literal["preserve", "canonical"]
 
 
 def load(path: str | os.PathLike[str], node_id: int | None = None) -> Device:
-    """Read an EDS, DCF or JSON model file. Raises OSError only when the path cannot be read."""
+    """Read an EDS, DCF, XDD/XDC or JSON model file. Raises OSError only when the path cannot be read."""
     data = Path(path).read_bytes()
     return loads(data, node_id=node_id, source=os.fspath(path))
 
 
 def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: Format | None = None) -> Device:
-    """Read EDS/DCF/JSON content; the format comes from `fmt`, else the content.
+    """Read EDS/DCF/XDD/XDC/JSON content; the format comes from `fmt`, else the content.
 
-    EDS/DCF content never raises; JSON that is not a cantools-od model raises ValueError.
+    EDS/DCF/XDD/XDC content never raises; JSON that is not a cantools-od model raises ValueError.
     """
     raw = data.encode("utf-8") if isinstance(data, str) else data
+    if fmt in ("xdd", "xdc") or (fmt is None and is_xml(raw)):
+        from .xdd.reader import read_bytes as read_xml
+
+        return read_xml(raw, source, node_id=node_id, dcf=True if fmt == "xdc" else None)
     if fmt == "json" or (fmt is None and raw.lstrip()[:1] == b"{"):
         try:
             device = Device.model_validate_json(raw)
@@ -48,7 +53,7 @@ def _not_json(error: ValidationError) -> bool:
 
 
 def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> bytes:
-    """The device as EDS, DCF or JSON.
+    """The device as EDS, DCF, XDD, XDC or JSON.
 
     *preserve* edits the bytes the device was read from, so an unchanged device
     comes back byte for byte; it falls back to *canonical* for devices built
@@ -56,6 +61,13 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> byt
     """
     if fmt == "json":
         return device.model_dump_json(indent=2).encode("utf-8") + b"\n"
+    if fmt in ("xdd", "xdc"):
+        from .xdd.writer import dumps_xml
+
+        return dumps_xml(device, xdc=fmt == "xdc", preserve=style == "preserve")
+    from .xdd.eds_form import eds_form
+
+    device = eds_form(device)
     dcf = fmt == "dcf"
     if dcf and not device.is_dcf and device.node_id is None:
         raise ValueError("an EDS becomes a DCF for one node: give its node-ID")
@@ -63,7 +75,8 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> byt
     from .eds.writer import canonical_text
 
     making_dcf = dcf and not device.is_dcf  # an EDS becomes a DCF: values are resolved, layout is new
-    if style == "preserve" and device._original is not None and not making_dcf:
+    from_eds = device._original is not None and not is_xml(device._original)
+    if style == "preserve" and from_eds and not making_dcf:
         return preserve(device)
     # A DCF made from an EDS states its node-ID and the values resolved for it.
     text = canonical_text(device, making_dcf)
@@ -90,6 +103,10 @@ def format_for(path: Path) -> Format:
         return "dcf"
     if suffix == ".json":
         return "json"
+    if suffix in (".xdd", ".xpd"):
+        return "xdd"
+    if suffix == ".xdc":
+        return "xdc"
     return "eds"
 
 

@@ -1,4 +1,4 @@
-"""`cantools-od convert`: between EDS, DCF and JSON, by file extension."""
+"""`cantools-od convert`: between EDS, DCF, XDD, XDC and JSON, by file extension."""
 
 from __future__ import annotations
 
@@ -13,12 +13,16 @@ from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, node_id_option, read_dev
 @click.command(name="convert")
 @click.argument("source", type=click.Path(dir_okay=False))
 @click.option(
-    "-o", "--output", required=True, type=click.Path(dir_okay=False), help="File to write (.eds, .dcf, .json)."
+    "-o",
+    "--output",
+    required=True,
+    type=click.Path(dir_okay=False),
+    help="File to write (.eds, .dcf, .xdd, .xpd, .xdc, .json).",
 )
 @node_id_option
 def command(source: str, output: str, node_id: int | None) -> None:
     """Convert SOURCE to OUTPUT. The same format in and out keeps the original
-    layout; a DCF made from an EDS needs --node-id."""
+    layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id."""
     from ..api import dumps, format_for, write_if_changed
 
     device = read_device(source, node_id)

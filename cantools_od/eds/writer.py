@@ -12,6 +12,7 @@ from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects,
 from .dialect import detect_dialect
 from .format import format_key, format_value
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
+from .storage import storage_comments
 
 
 @dataclass(frozen=True)
@@ -98,6 +99,8 @@ def _explicit_indices(device: Device) -> set[int]:
 def _with_extra(name: str, entries: dict[str, str], section: Section) -> OutSection:
     for key, text in section.extra.items():
         entries.setdefault(key, text)
+    if isinstance(section, Variable) and section.canopennode is not None:
+        return OutSection(name, entries, storage_comments(section, list(entries)))
     return OutSection(name, entries, dict(section.comments))
 
 

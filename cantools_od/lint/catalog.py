@@ -6,8 +6,19 @@ import importlib
 from functools import cache
 
 FAMILIES = (
-    "reader", "syntax", "objects", "dcf", "objlists", "values", "identity", "pdo", "cobid", "portability", "standard",
-)  # fmt: skip
+    "reader",
+    "xdd",
+    "syntax",
+    "objects",
+    "dcf",
+    "objlists",
+    "values",
+    "identity",
+    "pdo",
+    "cobid",
+    "portability",
+    "standard",
+)
 
 
 @cache

@@ -9,6 +9,7 @@ from typing import Literal
 
 from pydantic import ValidationError
 
+from .eds.format import IntStyle
 from .eds.reader import read_bytes
 from .model import Device
 from .xdd import is_xml
@@ -52,12 +53,13 @@ def _not_json(error: ValidationError) -> bool:
     return any(detail["type"] == "json_invalid" for detail in error.errors())
 
 
-def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> bytes:
+def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve", int_style: IntStyle | None = None) -> bytes:
     """The device as EDS, DCF, XDD, XDC or JSON.
 
     *preserve* edits the bytes the device was read from, so an unchanged device
     comes back byte for byte; it falls back to *canonical* for devices built
-    in code or read from JSON, and for a DCF made from an EDS.
+    in code or read from JSON, and for a DCF made from an EDS. `int_style`
+    chooses the radix of integers in canonical output (default: canonical).
     """
     if fmt == "json":
         return device.model_dump_json(indent=2).encode("utf-8") + b"\n"
@@ -79,7 +81,7 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> byt
     if style == "preserve" and from_eds and not making_dcf:
         return preserve(device)
     # A DCF made from an EDS states its node-ID and the values resolved for it.
-    text = canonical_text(device, making_dcf)
+    text = canonical_text(device, making_dcf, int_style or IntStyle())
     try:
         return text.encode("ascii")
     except UnicodeEncodeError:

@@ -18,6 +18,7 @@ FAMILIES = (
     "cobid",
     "portability",
     "standard",
+    "canopennode",
 )
 
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..model import AccessType, Device, NodeIdExpr, Object, ObjectKind, SubObject
+from ..model import AccessType, Device, NodeIdExpr, Object, ObjectKind, Origin, SubObject
 from . import ini
 from .keys import Kind
 from .report import Report
@@ -87,12 +87,23 @@ def apply_compact_sections(device: Device, sections: list[tuple[int, str, ini.In
                 )
                 sub = obj.subs[subindex] = implicit_sub(obj, subindex)
                 obj.subs = dict(sorted(obj.subs.items()))
+            _locate(sub, section, kind, by_key[key], report.file)
             if kind == "name":
                 sub.name = collected.extra[key]
             elif kind == "denotation":
                 sub.denotation = collected.extra[key]
             else:
                 type_entry(device, sub, obj, "parameter_value", by_key[key], report)
+
+
+_COMPACT_KEYS = {"name": "ParameterName", "value": "ParameterValue", "denotation": "Denotation"}
+
+
+def _locate(sub: SubObject, section: ini.IniSection, kind: str, entry: ini.Entry, file: str) -> None:
+    """An implicit sub-object's value is written in [xxxxName/Value/Denotation]: findings about it go there."""
+    if sub.origin is None:
+        sub.origin = Origin(file=file, line=section.line, column=section.column)
+    sub.origin.keys[_COMPACT_KEYS[kind]] = (entry.line, entry.key_col, entry.value_col)
 
 
 def _object_links(device: Device, obj: Object, section: ini.IniSection, report: Report) -> None:

@@ -18,6 +18,7 @@ from ..model import (
     FileInfo,
     Object,
     ObjectList,
+    Section,
     SubObject,
     ValueKind,
     Variable,
@@ -245,20 +246,35 @@ def _check_header(section: ini.IniSection, report: Report) -> None:
         report.error("EDS101", f"not a key=value entry: {text[:60]!r}", line, 1)
 
 
+_SECTION_SPELLINGS = {
+    "fileinfo": keys.FILE_INFO,
+    "deviceinfo": keys.DEVICE_INFO,
+    "dummyusage": keys.DUMMY_USAGE,
+    "comments": keys.COMMENTS,
+    **{name: spelling for name, (spelling, _) in keys.OBJECT_LISTS.items()},
+    **{name: keys.COMMISSIONING for name in keys.COMMISSIONING_SPELLINGS},
+}
+
+
 def _read_file_section(device: Device, section: ini.IniSection, report: Report) -> None:
     name = section.name.lower()
+    part: Section | None = None
     if name == "fileinfo":
-        device.file_info = _keyed(FileInfo, section, keys.FILE_INFO_KEYS, report)
+        part = device.file_info = _keyed(FileInfo, section, keys.FILE_INFO_KEYS, report)
     elif name == "deviceinfo":
-        device.device_info = _keyed(DeviceInfo, section, keys.DEVICE_INFO_KEYS, report)
+        part = device.device_info = _keyed(DeviceInfo, section, keys.DEVICE_INFO_KEYS, report)
     elif name in keys.COMMISSIONING_SPELLINGS:
-        device.commissioning = _keyed(Commissioning, section, keys.COMMISSIONING_KEYS, report)
+        part = device.commissioning = _keyed(Commissioning, section, keys.COMMISSIONING_KEYS, report)
     elif name in keys.OBJECT_LISTS:
-        setattr(device, keys.OBJECT_LISTS[name][1], _object_list(section, report))
+        part = _object_list(section, report)
+        setattr(device, keys.OBJECT_LISTS[name][1], part)
     elif name == "dummyusage":
-        device.dummy_usage = _dummy_usage(section, report)
+        part = device.dummy_usage = _dummy_usage(section, report)
     elif name == "comments":
-        device.comments = _comments(section, report)
+        part = device.comments = _comments(section, report)
+    if part is not None:
+        if part.origin is not None and section.name != _SECTION_SPELLINGS[name]:
+            part.origin.spelled[""] = section.name  # "" is the section's own name, as for comments
     elif _MODULE_SECTION.match(section.name):
         device.module_sections.append(raw_section(section, report))
     else:
@@ -300,7 +316,28 @@ def _object_list(section: ini.IniSection, report: Report) -> ObjectList:
             collected.extra[str(position)] = text
             continue
         entries[position] = index
-    return ObjectList(supported_objects=count, entries=entries, **collected.common())
+    found = ObjectList(supported_objects=count, entries=entries, **collected.common())
+    found._repeats = _repeated_positions(section)
+    return found
+
+
+def _repeated_positions(section: ini.IniSection) -> dict[int, list[tuple[int, int, int]]]:
+    """Positions written more than once: each of their entries as (line, key column, object index)."""
+    written = [entry.key for entry in section.entries]
+    if len(set(written)) == len(written):
+        return {}  # the common case
+    by_position: dict[int, list[tuple[int, int, int]]] = {}
+    for entry in section.entries:
+        key = entry.key
+        if not (key.isdigit() and key == str(int(key)) and int(key) > 0):
+            continue
+        try:
+            index, _ = parse_int(entry.value)
+        except ValueError:
+            continue
+        if isinstance(index, int) and 0 <= index <= 0xFFFF:
+            by_position.setdefault(int(key), []).append((entry.line, entry.key_col, index))
+    return {position: found for position, found in by_position.items() if len(found) > 1}
 
 
 def _dummy_usage(section: ini.IniSection, report: Report) -> DummyUsage:

@@ -64,8 +64,9 @@ class Slot:
         return isinstance(self.var, SubObject) and self.var.implicit
 
     def location(self, ctx: Context) -> Location:
-        """Where the configured value is written; the owner when the entry has no section."""
-        return ctx.at(self.owner) if self.implicit else ctx.value_at(self.var, self.key)
+        """Where the configured value is written: the [xxxxValue] entry of a CompactSubObj value,
+        the owner when the entry is not written at all (CompactPDO, CompactSubObj default)."""
+        return ctx.written_at(self.owner, self.var, self.key)
 
     def key_location(self, ctx: Context, key: str) -> Location:
         if self.implicit:

@@ -28,7 +28,12 @@ declare(
 A value (DefaultValue, ParameterValue, LowLimit, HighLimit, or a number in an info section)
 cannot be read as its data type: not a number, an invalid octal number, a formula other than
 `$NODEID` plus constants, hex digits that are not byte pairs, a REAL out of range. The text is
-kept as it is.""",
+kept as it is.
+
+Error: tools read another value or none. Warning for `DefaultValue=0` on a DOMAIN: CANopenNode's
+editors write it for an empty domain and CANopenNode reads it so; lely rejects it, python-canopen
+reads the byte 00h. Fix: none offered; write the value in its type's form (DOMAIN: hex byte pairs).
+Fixed: `DefaultValue=12`.""",
     "[2000]\nDataType=0x0005\nDefaultValue=twelve",
 )
 declare(

@@ -20,6 +20,8 @@ class Fix:
     message: str
     safe: bool
     apply: Callable[[Device], None] = field(compare=False, repr=False)
+    lines: tuple[int, ...] = ()
+    """Lines of the file the fix rewrites or removes besides the finding's own (lines it adds are not named)."""
 
 
 @dataclass(frozen=True)
@@ -67,6 +69,14 @@ class Context:
         if section is None or section.origin is None:
             return self.at(section)
         return section.origin.value(key)
+
+    def written_at(self, owner: Object, var: Variable, key: str) -> Location:
+        """Where `var`'s `key` is written: its own line, the [xxxxValue]/[xxxxName] entry that holds a
+        CompactSubObj value, or the owner's header for an entry the file implies without writing it."""
+        implicit = isinstance(var, SubObject) and var.implicit
+        if implicit and (var.origin is None or key not in var.origin.keys):
+            return self.at(owner)
+        return self.value_at(var, key)
 
     def variables(self) -> Iterator[tuple[Object, int, Variable]]:
         """Every VAR object (sub-index 0) and every sub-object, with its owner."""

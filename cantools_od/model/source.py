@@ -45,7 +45,8 @@ class Origin(BaseModel):
     layout: dict[str, tuple[int, int, int]] = {}
     """Canonical key name → (lines after the header, key column, value column); shared, never edit it."""
     spelled: dict[str, str] = {}
-    """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written."""
+    """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written;
+    under "" the section's own name when written otherwise (`DeviceCommissioning`)."""
 
     def header(self) -> Location:
         return Location(file=self.file, line=self.line, column=self.column)

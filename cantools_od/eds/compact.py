@@ -103,7 +103,8 @@ def _locate(sub: SubObject, section: ini.IniSection, kind: str, entry: ini.Entry
     """An implicit sub-object's value is written in [xxxxName/Value/Denotation]: findings about it go there."""
     if sub.origin is None:
         sub.origin = Origin(file=file, line=section.line, column=section.column)
-    sub.origin.keys[_COMPACT_KEYS[kind]] = (entry.line, entry.key_col, entry.value_col)
+    # a new dict: origins built by the reader may share one empty dict
+    sub.origin.keys = {**sub.origin.keys, _COMPACT_KEYS[kind]: (entry.line, entry.key_col, entry.value_col)}
 
 
 def _object_links(device: Device, obj: Object, section: ini.IniSection, report: Report) -> None:

@@ -274,7 +274,8 @@ def _read_file_section(device: Device, section: ini.IniSection, report: Report) 
         part = device.comments = _comments(section, report)
     if part is not None:
         if part.origin is not None and section.name != _SECTION_SPELLINGS[name]:
-            part.origin.spelled[""] = section.name  # "" is the section's own name, as for comments
+            # "" is the section's own name, as for comments; a new dict, as origins may share an empty one
+            part.origin.spelled = {**part.origin.spelled, "": section.name}
     elif _MODULE_SECTION.match(section.name):
         device.module_sections.append(raw_section(section, report))
     else:

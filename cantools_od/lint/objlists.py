@@ -113,7 +113,7 @@ def unlisted(ctx: Context) -> Iterator[Finding]:
         if obj.implicit or target is None or index in listed:
             continue
         found = object_list(ctx.device, target)
-        count_line = found.origin.keys.get("SupportedObjects", (0,))[0] if found and found.origin else 0
+        count_line = (found.origin.where("SupportedObjects") or (0,))[0] if found and found.origin else 0
         fix = Fix(f"add 0x{index:04X} to [{target}]", True, _fix_list(index), (count_line,) if count_line else ())
         yield ctx.report("EDS012", f"[{index:04X}] is in no object list; it belongs in [{target}]", ctx.at(obj), fix)
 
@@ -374,7 +374,7 @@ def numbering(ctx: Context) -> Iterator[Finding]:
 
 
 def _entry_line(found: ObjectList, position: int) -> int:
-    return found.origin.keys.get(str(position), (0, 0, 0))[0] if found.origin is not None else 0
+    return (found.origin.where(str(position)) or (0,))[0] if found.origin is not None else 0
 
 
 def _repeats(ctx: Context, name: str, found: ObjectList) -> Iterator[Finding]:

@@ -74,7 +74,7 @@ class Context:
         """Where `var`'s `key` is written: its own line, the [xxxxValue]/[xxxxName] entry that holds a
         CompactSubObj value, or the owner's header for an entry the file implies without writing it."""
         implicit = isinstance(var, SubObject) and var.implicit
-        if implicit and (var.origin is None or key not in var.origin.keys):
+        if implicit and (var.origin is None or var.origin.where(key) is None):
             return self.at(owner)
         return self.value_at(var, key)
 

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import sys
+
 import click
 
 from ..model import Severity
-from .common import identifiers_for, pins_option, read_device, report
+from .common import EXIT_FINDINGS, errors_to_fix, identifiers_for, pins_option, read_device, report
 
 
 @click.command(name="ids")
@@ -17,4 +19,8 @@ def command(file: str, pin_file: str | None) -> None:
     freeze names: generators then keep them when display names change."""
     device = read_device(file)
     report(device.diagnostics, minimum=Severity.ERROR)
+    problems = errors_to_fix(device)
+    if problems:  # identifiers of a file read only in part would pin the wrong names
+        click.echo(f"{file}: error: no identifiers printed: {problems}", err=True)
+        sys.exit(EXIT_FINDINGS)
     click.echo(identifiers_for(device, file, pin_file).to_toml(), nl=False)

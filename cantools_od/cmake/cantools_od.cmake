@@ -2,7 +2,7 @@
 #
 #   cantools_od_generate(<target> EDS <file>
 #                        [NAME <name>] [TARGETS c|rust|python|markdown ...]
-#                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD])
+#                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD] [KEEP_GOING])
 #
 # Adds a custom command that runs `cantools-od gen` whenever the EDS (or the pin file, or the
 # cantools-od installation) changes. For the `c` target (the default), <name>.c is added to
@@ -17,6 +17,9 @@
 #   PINS        a pin file of identifiers (`cantools-od ids`); default: <EDS stem>.ids.toml beside
 #               the EDS when it exists.
 #   CAN_FD      allow PDOs of up to 64 bytes.
+#   KEEP_GOING  an error in the EDS that touches generated code fails the build unless this is
+#               given; with it, what the errors touch is left out (and listed in the generated
+#               files' header comments and in the build output) and the rest is generated.
 #
 # Call it in the directory that defines <target> (CMake attaches custom commands to targets of the
 # same directory). Which cantools-od runs:
@@ -83,7 +86,7 @@ function(_cantools_od_default_name eds out)
 endfunction()
 
 function(cantools_od_generate target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD" "EDS;NAME;NODE_ID;OUTPUT_DIR;PINS" "TARGETS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD;KEEP_GOING" "EDS;NAME;NODE_ID;OUTPUT_DIR;PINS" "TARGETS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "cantools_od_generate: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -123,6 +126,9 @@ function(cantools_od_generate target)
   endif()
   if(arg_CAN_FD)
     list(APPEND _options --can-fd)
+  endif()
+  if(arg_KEEP_GOING)
+    list(APPEND _options --keep-going)
   endif()
   if(arg_PINS)
     get_filename_component(_pins "${arg_PINS}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")

@@ -13,6 +13,11 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..names import UnknownName, check_names
+
+CONFIG_KEYS = ("select", "ignore", "per-file-ignores")
+"""The keys of `[tool.cantools-od]`; any other is an error, so that a misspelt one is not ignored."""
+
 
 @dataclass(frozen=True)
 class Selection:
@@ -67,6 +72,10 @@ def load_selection(start: Path) -> Selection:
     table = data.get("tool", {}).get("cantools-od", {})
     if not isinstance(table, dict):
         raise ValueError(f"{path}: [tool.cantools-od] must be a table")
+    try:
+        check_names("key in [tool.cantools-od]", table, CONFIG_KEYS)
+    except UnknownName as error:
+        raise ValueError(f"{path}: {error}") from None
     return Selection(
         select=_codes(table, "select", path),
         ignore=_codes(table, "ignore", path),
@@ -81,4 +90,22 @@ def _codes(table: dict[str, object], key: str, path: Path) -> tuple[str, ...]:
     value = table.get(key, [])
     if not isinstance(value, list) or not all(isinstance(code, str) for code in value):
         raise ValueError(f"{path}: [tool.cantools-od] {key} must be a list of rule codes")
-    return tuple(code.strip().upper() for code in value)
+    codes = tuple(code.strip().upper() for code in value)
+    try:
+        check_selectors(codes)
+    except UnknownName as error:
+        raise ValueError(f"{path}: [tool.cantools-od] {key}: {error}") from None
+    return codes
+
+
+def check_selectors(selectors: tuple[str, ...]) -> None:
+    """Raise UnknownName for a selector that is no rule code nor the start of one (`EDS`, `PDO0`)."""
+    from . import catalog
+    from .rules import RULES
+
+    catalog.load()
+    codes = set(RULES)
+    prefixes = {code[:length] for code in codes for length in range(1, len(code))}
+    families = sorted({code[:3] for code in codes})
+    hint = f"a rule code (`cantools-od rules` lists them) or a prefix such as {', '.join(families)}"
+    check_names("rule code", selectors, codes, accepts=prefixes.__contains__, hint=hint)

@@ -19,7 +19,7 @@ def with_left_out(filename: str, text: str, left_out: list[str]) -> str:
     if suffix in (".c", ".h", ".cpp", ".hpp", ".cc"):
         lines = [f"/* {c_comment(line)} */" for line in [HEADLINE, *(f"- {item}" for item in left_out)]]
     elif suffix == ".md":
-        lines = [f"> {markdown_text(HEADLINE)}", ">", *(f"> - {markdown_text(item)}" for item in left_out), ""]
+        lines = [f"> {HEADLINE}", ">", *(f"> - {markdown_text(item)}" for item in left_out), ""]
     else:  # Rust, Python, TOML and other languages with line comments
         mark = "//" if suffix == ".rs" else "#"
         lines = [f"{mark} {line_comment(line)}" for line in [HEADLINE, *(f"- {item}" for item in left_out)]]

@@ -3,6 +3,7 @@ unchanged byte for byte and mode for mode, and nothing written beside it."""
 
 from __future__ import annotations
 
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -21,6 +22,7 @@ COMMANDS: dict[str, list[str]] = {
     "import-table": ["import-table", "{}", "-o", "imported.eds"],
 }
 REFUSED_BY_EVERY_READER = {"binary.eds", "empty.eds", "blank.eds", "nul-in-name.eds"}
+"""import-table reads vendor tables (text), not device descriptions: only these are hostile to it."""
 
 
 def args_for(command: str, name: str) -> list[str]:
@@ -28,17 +30,28 @@ def args_for(command: str, name: str) -> list[str]:
 
 
 @pytest.mark.parametrize("name", sorted(HOSTILE))
-@pytest.mark.parametrize("command", sorted(COMMANDS))
-def test_hostile_input(tmp_path: Path, command: str, name: str) -> None:
-    if command == "import-table" and name not in REFUSED_BY_EVERY_READER:
-        pytest.skip("import-table reads vendor tables, not device descriptions: text is its input")
-    source = tmp_path / name
+def test_hostile_input(tmp_path: Path, name: str) -> None:
+    """Every command on one hostile input, each in a folder of its own, a few at a time."""
+    commands = [c for c in COMMANDS if c != "import-table" or name in REFUSED_BY_EVERY_READER]
+    with ThreadPoolExecutor(max_workers=3) as pool:
+        failures = [f for found in pool.map(lambda c: run_on(tmp_path / c, c, name), commands) for f in found]
+    assert not failures, "\n\n".join(failures)
+
+
+def run_on(folder: Path, command: str, name: str) -> list[str]:
+    """What went wrong running `command` on hostile input `name` in `folder`."""
+    folder.mkdir()
+    source = folder / name
     source.write_bytes(HOSTILE[name])
     source.chmod(0o640)
-    before = snapshot(tmp_path)
-    ran = run(*args_for(command, name), cwd=tmp_path)
-    assert_failed_cleanly(ran, one_line=command != "import-table")
-    assert snapshot(tmp_path) == before, f"files changed or appeared:\n{ran}"
+    before = snapshot(folder)
+    ran = run(*args_for(command, name), cwd=folder)
+    try:
+        assert_failed_cleanly(ran, one_line=command != "import-table")
+        assert snapshot(folder) == before, f"files changed or appeared:\n{ran}"
+    except AssertionError as failure:
+        return [str(failure)]
+    return []
 
 
 @pytest.mark.parametrize("command", sorted(COMMANDS))

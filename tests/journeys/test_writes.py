@@ -4,10 +4,11 @@ output as it was (no partial set, no temporary file)."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
-from kit import GOOD, assert_failed_cleanly, non_writer, open_folder, run, snapshot, temp_files
+from kit import GOOD, NOBODY, assert_failed_cleanly, non_writer, open_folder, run, snapshot, temp_files
 
 UNFORMATTED = GOOD.replace(b"DataType=0x0007", b"DataType=7")
 FIXABLE = (
@@ -141,3 +142,33 @@ def test_unwritable_places_fail_in_one_line_and_write_nothing() -> None:
             assert snapshot(folder) == before, f"written although it failed:\n{ran}"
         assert temp_files(folder) == []
         assert list((folder / "out").iterdir()) == []  # the depfile failed: no .c/.h either
+
+
+def test_a_rewrite_keeps_the_owner(tmp_path: Path) -> None:
+    """root formatting a user's file (a CI job, a shared checkout) leaves it the user's."""
+    if os.geteuid() != 0:
+        pytest.skip("only root may give a file to another user")
+    writes(tmp_path)
+    path = tmp_path / "drive.eds"
+    os.chown(path, NOBODY, NOBODY)
+    assert run("fmt", "drive.eds", cwd=tmp_path).returncode == 0
+    assert path.read_bytes() != UNFORMATTED
+    assert (path.stat().st_uid, path.stat().st_gid) == (NOBODY, NOBODY)
+
+
+def test_the_python_api_saves_the_same_way(tmp_path: Path) -> None:
+    """`cantools_od.save` goes through the same writer: mode kept, refusal as an exception, no temp file."""
+    from cantools_od import load, save
+    from cantools_od.files import CannotWrite
+
+    path = tmp_path / "drive.eds"
+    path.write_bytes(GOOD)
+    path.chmod(0o640)
+    device = load(path)
+    device.objects[0x1017].default = 250
+    assert save(device, path) and path.stat().st_mode & 0o777 == 0o640
+    assert not save(device, path)  # unchanged: not rewritten
+    (tmp_path / "folder.eds").mkdir()
+    with pytest.raises(CannotWrite, match=r"cannot write .*folder\.eds: it is a folder"):
+        save(device, tmp_path / "folder.eds")
+    assert temp_files(tmp_path) == []

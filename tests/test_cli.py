@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 import shutil
 import subprocess
-import time
 from pathlib import Path
 
 import pytest
@@ -17,13 +16,10 @@ def run(*args: str | Path, cwd: Path | None = None) -> subprocess.CompletedProce
     return subprocess.run([*cli_command(), *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=120)
 
 
-def test_version_is_fast() -> None:
-    run("--version")  # warm the file cache
-    start = time.perf_counter()
+def test_version() -> None:
+    # Start-up time is measured by bench/bench_lint.py, not asserted here: a loaded CI machine is no stopwatch.
     result = run("--version")
-    elapsed = time.perf_counter() - start
     assert result.returncode == 0 and result.stdout.startswith("cantools-od, version ")
-    assert elapsed < 0.3, f"--version took {elapsed * 1000:.0f} ms"
 
 
 def test_python_dash_m() -> None:

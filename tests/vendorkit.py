@@ -1,7 +1,7 @@
 """Independent counts of what the four vendor manuals document, for the importer's tests.
 
 Each counter reads the raw manual text with plain regular expressions written for that one
-manual — none of cantools_od.vendor is used — and returns, per (index, sub-index) pair the
+manual — none of cantools_od.tableimport is used — and returns, per (index, sub-index) pair the
 manual documents, the access and data type it states, or None where the manual is silent or
 contradicts itself (the pair then counts for coverage but not for correctness).
 

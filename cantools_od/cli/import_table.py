@@ -50,8 +50,8 @@ def command(
     file could not be read, or no object was found."""
     from ..api import dumps
     from ..model import Severity
-    from ..vendor import UnreadableInput, import_tables
-    from ..vendor.merge import POLICIES
+    from ..tableimport import UnreadableInput, import_tables
+    from ..tableimport.merge import POLICIES
 
     chosen_policy = next((p for p in POLICIES if p == policy), None)
     try:

@@ -7,7 +7,7 @@ from . import ini
 from .keys import Kind
 from .report import Report
 from .sections import collect, raw_section
-from .typing import type_entry
+from .typed_values import type_entry
 from .values import parse_int
 
 NR_OF_OBJECTS = "NrOfObjects"

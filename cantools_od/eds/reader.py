@@ -26,7 +26,7 @@ from .decode import decode
 from .dialect import detect_dialect, directive
 from .report import Report
 from .sections import Collected, collect, raw_section
-from .typing import type_values
+from .typed_values import type_values
 from .values import parse_int
 
 _OBJECT_SECTION = re.compile(

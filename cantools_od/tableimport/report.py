@@ -2,14 +2,32 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-from ..model import Diagnostic, ObjectKind
-from .merge import Conflict, display
+from ..model import Device, Diagnostic, ObjectKind, Severity
+from .entries import ReadResult
+from .merge import Conflict, MergeResult, Policy, display
+from .overrides import Overrides
 
-if TYPE_CHECKING:
-    from .api import ImportResult
+
+@dataclass
+class ImportResult:
+    device: Device
+    merged: MergeResult
+    reads: list[ReadResult]
+    diagnostics: list[Diagnostic]
+    policy: Policy
+    overrides: Overrides | None = None
+    lint_explained: dict[str, str] = field(default_factory=dict)
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity is Severity.ERROR]
+
+    def report(self) -> str:
+        """The Markdown import report."""
+        return render(self)
 
 
 def _cell(text: str) -> str:

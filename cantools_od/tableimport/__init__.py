@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
-from .api import LAYOUTS, ImportResult, UnreadableInput, detect_layout, import_tables, read_source
+from .api import LAYOUTS, UnreadableInput, detect_layout, import_tables, read_source
+from .report import ImportResult
 
 __all__ = ["LAYOUTS", "ImportResult", "UnreadableInput", "detect_layout", "import_tables", "read_source"]

@@ -11,7 +11,7 @@ import pytest
 from cantools_od import load
 from cantools_od.api import save
 from cantools_od.model import AccessType, NodeIdExpr, ObjectKind
-from cantools_od.vendor import UnreadableInput, detect_layout, import_tables
+from cantools_od.tableimport import UnreadableInput, detect_layout, import_tables
 
 HEADER = ["Index", "Sub-index", "Name", "Object code", "Data type", "Access", "PDO mapping", "Default value"]
 ROWS = [

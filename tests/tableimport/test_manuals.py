@@ -14,8 +14,8 @@ from vendorkit import COUNTERS, MANUALS, SEEDS, score
 
 from cantools_od.api import save
 from cantools_od.model import AccessType, NodeIdExpr, ObjectKind
-from cantools_od.vendor import ImportResult, import_tables
-from cantools_od.vendor.merge import Conflict
+from cantools_od.tableimport import ImportResult, import_tables
+from cantools_od.tableimport.merge import Conflict
 
 
 def seed(prefix: str) -> Path:

@@ -3,16 +3,16 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..model import Device, Diagnostic, Severity
+from ..model import Diagnostic, Severity
 from .build import BuildInfo, build
 from .entries import ReadResult, loc
 from .facts import expand
 from .manual import TEXT_LAYOUTS, detect_text_layout, read_manual
-from .merge import MergeOptions, MergeResult, Policy, merge
+from .merge import MergeOptions, Policy, display, merge
 from .overrides import Overrides, load_overrides
+from .report import ImportResult
 from .tables import TABLE_LAYOUTS, read_delimited, read_markdown, read_xlsx
 from .text import read_text
 
@@ -25,26 +25,6 @@ class UnreadableInput(Exception):
     def __init__(self, diagnostics: list[Diagnostic]) -> None:
         super().__init__("; ".join(d.format() for d in diagnostics))
         self.diagnostics = diagnostics
-
-
-@dataclass
-class ImportResult:
-    device: Device
-    merged: MergeResult
-    reads: list[ReadResult]
-    diagnostics: list[Diagnostic]
-    policy: Policy
-    overrides: Overrides | None = None
-    lint_explained: dict[str, str] = field(default_factory=dict)
-
-    @property
-    def errors(self) -> list[Diagnostic]:
-        return [d for d in self.diagnostics if d.severity is Severity.ERROR]
-
-    def report(self) -> str:
-        from .report import render
-
-        return render(self)
 
 
 def detect_layout(path: str, data: bytes) -> str:
@@ -177,8 +157,6 @@ def import_tables(
 
 
 def _show(value: object, field_name: str) -> str:
-    from .merge import display
-
     return display(value, field_name)  # type: ignore[arg-type]
 
 

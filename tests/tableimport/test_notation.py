@@ -1,11 +1,11 @@
-"""The spellings vendor manuals use, read by cantools_od.vendor.notation."""
+"""The spellings vendor manuals use, read by cantools_od.tableimport.notation."""
 
 from __future__ import annotations
 
 import pytest
 
 from cantools_od.model import AccessType, NodeIdExpr, ObjectKind
-from cantools_od.vendor.notation import (
+from cantools_od.tableimport.notation import (
     clean,
     parse_access,
     parse_index,
@@ -318,7 +318,7 @@ def test_no_spelling_raises() -> None:
     import random
     import string
 
-    from cantools_od.vendor import notation
+    from cantools_od.tableimport import notation
 
     rng = random.Random(7)
     alphabet = string.printable + "h_~\u2013\u2026\u2079\u00b2\u00b5\u03bc\u0425\u0661$\\{}()[]^*"

@@ -1,4 +1,4 @@
-"""The vendor EDS files shipped in eds/vendor: produced by the importer, clean, generating code."""
+"""The vendor EDS files shipped in eds/tableimport: produced by the importer, clean, generating code."""
 
 from __future__ import annotations
 
@@ -13,11 +13,11 @@ from vendorkit import MANUALS, SEEDS
 from cantools_od import load
 from cantools_od.api import dumps
 from cantools_od.lint import lint
-from cantools_od.vendor import import_tables
+from cantools_od.tableimport import import_tables
 
 from support import EXAMPLES, cli_command
 
-VENDOR = EXAMPLES / "vendor"
+SHIPPED_DIR = EXAMPLES / "tableimport"
 SHIPPED = {
     "elmo_simpliq": ["000", "001"],
     "sanyo_sanmotion_r": ["002"],
@@ -27,17 +27,17 @@ SHIPPED = {
 
 
 def test_every_shipped_file_is_listed() -> None:
-    assert sorted(p.stem for p in VENDOR.glob("*.eds")) == sorted(SHIPPED)
+    assert sorted(p.stem for p in SHIPPED_DIR.glob("*.eds")) == sorted(SHIPPED)
     for name in SHIPPED:
-        assert (VENDOR / f"{name}.overrides.toml").is_file()
-        assert (VENDOR / f"{name}.report.md").is_file()
+        assert (SHIPPED_DIR / f"{name}.overrides.toml").is_file()
+        assert (SHIPPED_DIR / f"{name}.report.md").is_file()
 
 
 @pytest.mark.parametrize("name", sorted(SHIPPED))
 def test_loads_and_lints_clean_or_explained(name: str) -> None:
-    device = load(VENDOR / f"{name}.eds")
+    device = load(SHIPPED_DIR / f"{name}.eds")
     assert [d.format() for d in device.diagnostics if d.severity.value == "error"] == []
-    explained = tomllib.loads((VENDOR / f"{name}.overrides.toml").read_text(encoding="utf-8")).get("lint", {})
+    explained = tomllib.loads((SHIPPED_DIR / f"{name}.overrides.toml").read_text(encoding="utf-8")).get("lint", {})
     findings = [f for f in lint(device) if f.severity.value in ("error", "warning")]
     unexplained = [f.format() for f in findings if f.code not in explained]
     assert unexplained == []
@@ -52,7 +52,7 @@ def test_regenerates_identically(name: str) -> None:
             pytest.skip("../shared/seeds is absent")
         sources.append(Path("..") / "shared" / "seeds" / MANUALS[prefix])
     root = EXAMPLES.parent
-    overrides = Path("eds") / "vendor" / f"{name}.overrides.toml"
+    overrides = Path("eds") / "tableimport" / f"{name}.overrides.toml"
     import os
 
     here = Path.cwd()
@@ -61,14 +61,14 @@ def test_regenerates_identically(name: str) -> None:
         result = import_tables(sources, overrides=overrides, output_name=f"{name}.eds")
     finally:
         os.chdir(here)
-    assert dumps(result.device, "eds", "canonical") == (VENDOR / f"{name}.eds").read_bytes()
-    assert result.report() == (VENDOR / f"{name}.report.md").read_text(encoding="utf-8")
+    assert dumps(result.device, "eds", "canonical") == (SHIPPED_DIR / f"{name}.eds").read_bytes()
+    assert result.report() == (SHIPPED_DIR / f"{name}.report.md").read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("name", sorted(SHIPPED))
 def test_generates_compiling_c(name: str, tmp_path: Path) -> None:
     result = subprocess.run(
-        [*cli_command(), "gen", str(VENDOR / f"{name}.eds"), "-t", "c", "-o", str(tmp_path)],
+        [*cli_command(), "gen", str(SHIPPED_DIR / f"{name}.eds"), "-t", "c", "-o", str(tmp_path)],
         capture_output=True,
         text=True,
         timeout=120,

@@ -8,10 +8,11 @@ __version__ = "0.1.0"
 
 if TYPE_CHECKING:
     from .api import dumps, load, loads, save
+    from .changes import diff
     from .interop import to_canopen
     from .model import Device
 
-__all__ = ["Device", "__version__", "dumps", "load", "loads", "save", "to_canopen"]
+__all__ = ["Device", "__version__", "diff", "dumps", "load", "loads", "save", "to_canopen"]
 
 
 def __getattr__(name: str) -> Any:
@@ -24,6 +25,10 @@ def __getattr__(name: str) -> Any:
         from .interop import to_canopen
 
         return to_canopen
+    if name == "diff":
+        from .changes import diff
+
+        return diff
     if name == "Device":
         from .model import Device
 

@@ -23,6 +23,7 @@ COMMANDS = {
     "lint": ("lint", "Check EDS/DCF files against CiA 306/301 and PDO rules."),
     "rules": ("rules", "List the lint rules, or explain one."),
     "cmake-dir": ("cmake_dir", "Print the folder of the CMake package."),
+    "diff": ("diff", "Show what changed between two device descriptions, and what it breaks."),
     "import-table": ("import_table", "Import vendor OD tables (manual text, CSV/TSV, XLSX, Markdown) into an EDS."),
 }
 

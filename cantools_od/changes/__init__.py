@@ -1,0 +1,91 @@
+"""What changed between two device descriptions, and what it breaks: `diff` and its change records.
+
+The package is not called `diff` so that importing it never hides the `cantools_od.diff` function.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping
+
+from ..identifiers import assign, load_pins
+from ..model import Device
+from .compare import Sides, object_diffs
+from .device import device_changes
+from .pdos import VALUE_KINDS, absorbed, pdo_diffs
+from .records import IMPACT_ORDER, Change, DeviceDiff, Impact, Kind, ObjectDiff, PdoDiff, PdoEntryView, PdoView
+
+__all__ = [
+    "IMPACT_ORDER",
+    "Change",
+    "DeviceDiff",
+    "Impact",
+    "Kind",
+    "ObjectDiff",
+    "PdoDiff",
+    "PdoEntryView",
+    "PdoView",
+    "compare",
+    "diff",
+]
+
+Pins = Mapping[str, str] | str | os.PathLike[str] | None
+
+
+def diff(
+    old: Device | str | os.PathLike[str],
+    new: Device | str | os.PathLike[str],
+    node_id: int | None = None,
+    old_pins: Pins = None,
+    new_pins: Pins = None,
+) -> DeviceDiff:
+    """What changed from `old` to `new`: devices, or paths of files `cantools_od.load` reads.
+
+    Pins are pin tables or pin files (`cantools-od ids`); see `compare`. Raises OSError for an
+    unreadable path and ValueError for a JSON file that is not a model or a bad pin file.
+    """
+    from ..api import load
+
+    before = old if isinstance(old, Device) else load(old)
+    after = new if isinstance(new, Device) else load(new)
+    return compare(before, after, node_id, _pins(old_pins), _pins(new_pins))
+
+
+def _pins(pins: Pins) -> Mapping[str, str] | None:
+    if pins is None or isinstance(pins, Mapping):
+        return pins
+    return load_pins(os.fspath(pins))
+
+
+def compare(
+    old: Device,
+    new: Device,
+    node_id: int | None = None,
+    old_pins: Mapping[str, str] | None = None,
+    new_pins: Mapping[str, str] | None = None,
+) -> DeviceDiff:
+    """The changes from `old` to `new`.
+
+    `node_id` is what `$NODEID` stands for when comparing a formula with a number (default: the
+    node-ID each device states, else the other's). Pins (see docs/identifiers.md) decide the identifiers of each side:
+    a renamed entry whose identifier is pinned is a cosmetic change.
+    """
+    old_node, new_node = (node_id, node_id) if node_id is not None else (old.node_id, new.node_id)
+    old_node = old_node if old_node is not None else new_node
+    new_node = new_node if new_node is not None else old_node
+    sides = Sides(old, new, assign(old, old_pins), assign(new, new_pins), old_node, new_node)
+    pdos = pdo_diffs(sides)
+    shown = absorbed(pdos)
+    objects = []
+    for obj in object_diffs(sides):
+        kept = [
+            change
+            for change in obj.changes
+            if not (
+                change.kind in VALUE_KINDS
+                and ((change.index, change.subindex) in shown or (change.index, None) in shown)
+            )
+        ]
+        if kept:
+            objects.append(obj.model_copy(update={"changes": kept}))
+    return DeviceDiff(old=old.source, new=new.source, device=list(device_changes(old, new)), objects=objects, pdos=pdos)

@@ -1,0 +1,459 @@
+"""Object-level comparison: objects and sub-objects added, removed, and each field that changed."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from ..identifiers import Identifiers
+from ..model import (
+    AccessType,
+    CanopenNodeInfo,
+    DataType,
+    Device,
+    NodeIdExpr,
+    Object,
+    ObjectKind,
+    Section,
+    SubObject,
+    Value,
+    Variable,
+)
+from . import describe
+from .impact import access_impact, data_type_impact, flag_impact, limit_impact
+from .records import Change, Impact, Kind, ObjectDiff
+
+
+@dataclass(frozen=True)
+class Sides:
+    """Both devices with their identifiers, and the node-ID `$NODEID` stands for on each side (None: unknown)."""
+
+    old: Device
+    new: Device
+    old_ids: Identifiers
+    new_ids: Identifiers
+    old_node: int | None
+    new_node: int | None
+
+
+def same_value(old: Value | None, new: Value | None) -> bool:
+    """Equal typed values; NaN equals NaN, and text equals no bytes (a str is never bytes)."""
+    if isinstance(old, float) and isinstance(new, float) and math.isnan(old) and math.isnan(new):
+        return True
+    if isinstance(old, (str, bytes)) or isinstance(new, (str, bytes)):
+        return type(old) is type(new) and old == new
+    return old == new
+
+
+def object_diffs(sides: Sides) -> list[ObjectDiff]:
+    """One record per object that changed, in index order."""
+    diffs = []
+    for index in sorted(set(sides.old.objects) | set(sides.new.objects)):
+        old, new = sides.old.objects.get(index), sides.new.objects.get(index)
+        if old is None and new is not None:
+            changes = [_added(sides.new, new, None, Kind.OBJECT_ADDED)]
+        elif new is None and old is not None:
+            changes = [_removed(sides.old, old, None, Kind.OBJECT_REMOVED)]
+        elif old is not None and new is not None:
+            changes = list(_object_changes(sides, old, new))
+        if changes:
+            named = [_named(change, old, new) for change in changes]
+            diffs.append(ObjectDiff(index=index, name=_entry_name(old, new, None), changes=named))
+    return diffs
+
+
+def _entry_name(old: Object | None, new: Object | None, subindex: int | None) -> str:
+    for obj in (new, old):
+        var = obj if obj is None or subindex is None else obj.subs.get(subindex)
+        if var is not None:
+            return var.name
+    return ""
+
+
+def _named(change: Change, old: Object | None, new: Object | None) -> Change:
+    return change.model_copy(update={"name": _entry_name(old, new, change.subindex)})
+
+
+def _summary(device: Device, var: Variable, owner: Object) -> str:
+    if var is owner and owner.has_subs:
+        count = len(owner.subs)
+        return f"{owner.kind.name}, {count} sub-object{'s' if count != 1 else ''}"
+    dtype = device.entry_type(var, owner)
+    parts = [dtype.name if dtype is not None else _type_index(var.data_type)]
+    if var.access is not None:
+        parts.append(var.access.value)
+    if var.pdo_mapping:
+        parts.append("PDO-mappable")
+    if var.value() is not None:
+        parts.append(f"default {describe.value_text(var.value(), dtype)}")
+    return ", ".join(parts)
+
+
+def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
+    var = obj if subindex is None else obj.subs[subindex]
+    shown = _summary(device, var, obj)
+    return Change(kind=kind, impact=Impact.COMPATIBLE, index=obj.index, subindex=subindex, new=var.name, new_text=shown)
+
+
+def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
+    """The other side of `_added`: what was there, now gone."""
+    added = _added(device, obj, subindex, kind)
+    return added.model_copy(
+        update={"impact": Impact.BREAKING, "old": added.new, "old_text": added.new_text, "new": None, "new_text": ""}
+    )
+
+
+def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
+    index = old.index
+    if old.kind != new.kind:
+        yield Change(
+            kind=Kind.OBJECT_TYPE,
+            impact=Impact.BREAKING,
+            index=index,
+            field="object_type",
+            old=int(old.kind),
+            new=int(new.kind),
+            old_text=describe.object_type_text(old.kind),
+            new_text=describe.object_type_text(new.kind),
+            note="the generated structure changes",
+        )
+    yield from _entry_changes(sides, Entry(old, old, None), Entry(new, new, None))
+    if old.links != new.links:
+        yield _as_text(Kind.OBJECT_LINKS, Impact.COSMETIC, index, None, "links", _links(old.links), _links(new.links))
+    for sub in sorted(set(old.subs) | set(new.subs)):
+        if sub not in new.subs:
+            yield _removed(sides.old, old, sub, Kind.SUB_REMOVED)
+        elif sub not in old.subs:
+            yield _added(sides.new, new, sub, Kind.SUB_ADDED)
+        else:
+            yield from _sub_changes(sides, Entry(old.subs[sub], old, sub), Entry(new.subs[sub], new, sub))
+
+
+def _links(links: list[int] | None) -> str:
+    return "-" if links is None else " ".join(f"0x{index:04X}" for index in links)
+
+
+@dataclass(frozen=True)
+class Entry:
+    """An object (subindex None) or one of its sub-objects, with the object it belongs to."""
+
+    var: Variable
+    owner: Object
+    subindex: int | None
+
+
+def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    assert isinstance(old.var, SubObject) and isinstance(new.var, SubObject)
+    before, after = old.var.object_type or ObjectKind.VAR, new.var.object_type or ObjectKind.VAR
+    if before != after:
+        yield Change(
+            kind=Kind.OBJECT_TYPE,
+            impact=Impact.BREAKING,
+            index=old.owner.index,
+            subindex=old.subindex,
+            field="object_type",
+            old=int(before),
+            new=int(after),
+            old_text=describe.object_type_text(before),
+            new_text=describe.object_type_text(after),
+        )
+    yield from _entry_changes(sides, old, new)
+
+
+def _entry_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    for compare in _FIELD_COMPARISONS:
+        yield from compare(sides, old, new)
+
+
+def _plain(
+    kind: Kind,
+    impact: Impact,
+    index: int | None,
+    subindex: int | None,
+    field: str,
+    old: object,
+    new: object,
+    note: str = "",
+) -> Change:
+    return Change(
+        kind=kind,
+        impact=impact,
+        index=index,
+        subindex=subindex,
+        field=field,
+        old=_storable(old),
+        new=_storable(new),
+        old_text=describe.text(old),
+        new_text=describe.text(new),
+        note=note,
+    )
+
+
+def _storable(value: object) -> Value | None:
+    if value is None or isinstance(value, (bool, int, float, str, bytes)):
+        return value
+    return str(value)
+
+
+def _identifier(ids: Identifiers, entry: Entry) -> str:
+    if entry.subindex is None:
+        return ids.object(entry.owner.index)
+    return ids.member(entry.owner.index, entry.subindex)
+
+
+def _name(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    index, sub = old.owner.index, old.subindex
+    before, after = _identifier(sides.old_ids, old), _identifier(sides.new_ids, new)
+    moved = before != after
+    note = f"identifier {before} → {after}" if moved else f"identifier {after} stays"
+    if old.var.name != new.var.name:
+        impact = Impact.BREAKING if moved else Impact.COSMETIC
+        yield _plain(Kind.NAME, impact, index, sub, "name", old.var.name, new.var.name, note)
+    elif moved:
+        note = "the name stays, but the generated identifier changes (a pin, or another entry took it)"
+        yield _as_text(Kind.IDENTIFIER, Impact.BREAKING, index, sub, "identifier", before, after, note)
+    if sub is not None and not moved and sides.old_ids.object(index) == sides.new_ids.object(index):
+        flat_before, flat_after = sides.old_ids.flat(index, sub), sides.new_ids.flat(index, sub)
+        if flat_before != flat_after:
+            note = "the flat identifier (PDO fields, Python) changes"
+            yield _as_text(
+                Kind.IDENTIFIER, Impact.BREAKING, index, sub, "flat_identifier", flat_before, flat_after, note
+            )
+
+
+def _as_text(
+    kind: Kind, impact: Impact, index: int, subindex: int | None, field: str, old: str, new: str, note: str = ""
+) -> Change:
+    """A change of a field whose values are shown as they are (identifiers, access types, link lists)."""
+    return Change(
+        kind=kind,
+        impact=impact,
+        index=index,
+        subindex=subindex,
+        field=field,
+        old=old,
+        new=new,
+        old_text=old,
+        new_text=new,
+        note=note,
+    )
+
+
+def _type_index(index: int | None) -> str:
+    return "-" if index is None else f"0x{index:04X}"
+
+
+def _type_text(dtype: DataType | None, index: int | None) -> str:
+    if dtype is None:
+        return _type_index(index)
+    return dtype.name if dtype.index == index else f"{_type_index(index)} ({dtype.name})"
+
+
+def _data_type(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    if old.var.data_type == new.var.data_type:
+        return
+    before = sides.old.entry_type(old.var, old.owner)
+    after = sides.new.entry_type(new.var, new.owner)
+    impact, note = data_type_impact(before, after)
+    yield Change(
+        kind=Kind.DATA_TYPE,
+        impact=impact,
+        index=old.owner.index,
+        subindex=old.subindex,
+        field="data_type",
+        old=old.var.data_type,
+        new=new.var.data_type,
+        old_text=_type_text(before, old.var.data_type),
+        new_text=_type_text(after, new.var.data_type),
+        note=note,
+    )
+
+
+def _access_text(access: AccessType | None) -> str:
+    return "-" if access is None else access.value
+
+
+def _access(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    if old.var.access == new.var.access:
+        return
+    impact, note = access_impact(old.var.access, new.var.access)
+    before, after = _access_text(old.var.access), _access_text(new.var.access)
+    yield _as_text(Kind.ACCESS, impact, old.owner.index, old.subindex, "access", before, after, note)
+
+
+def _pdo_mapping(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    if bool(old.var.pdo_mapping) == bool(new.var.pdo_mapping):
+        return  # an absent PDOMapping key reads as 0
+    impact, note = flag_impact(old.var.pdo_mapping, new.var.pdo_mapping, "PDO-mappable")
+    index, sub = old.owner.index, old.subindex
+    yield _plain(
+        Kind.PDO_MAPPING, impact, index, sub, "pdo_mapping", bool(old.var.pdo_mapping), bool(new.var.pdo_mapping), note
+    )
+
+
+def _limits(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    for low, field, kind in ((True, "low_limit", Kind.LOW_LIMIT), (False, "high_limit", Kind.HIGH_LIMIT)):
+        before, after = getattr(old.var, field), getattr(new.var, field)
+        if same_value(before, after):
+            continue
+        dtype = sides.new.entry_type(new.var, new.owner)
+        impact, note = limit_impact(before, after, low, dtype, sides.new_node)
+        yield _value_change(kind, impact, old, field, before, after, dtype, note)
+
+
+def _value_change(
+    kind: Kind,
+    impact: Impact,
+    old: Entry,
+    field: str,
+    before: Value | None,
+    after: Value | None,
+    dtype: DataType | None,
+    note: str = "",
+) -> Change:
+    return Change(
+        kind=kind,
+        impact=impact,
+        index=old.owner.index,
+        subindex=old.subindex,
+        field=field,
+        old=before,
+        new=after,
+        old_text=describe.value_text(before, dtype),
+        new_text=describe.value_text(after, dtype),
+        note=note,
+    )
+
+
+def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    for field, kind in (("default", Kind.DEFAULT), ("parameter_value", Kind.PARAMETER_VALUE)):
+        before, after = getattr(old.var, field), getattr(new.var, field)
+        if same_value(before, after) or (field == "parameter_value" and _same_configured(old.var, new.var, sides)):
+            continue
+        dtype = sides.new.entry_type(new.var, new.owner) or sides.old.entry_type(old.var, old.owner)
+        if _same_when_resolved(before, after, sides):
+            yield _value_change(
+                Kind.NODEID_FORM,
+                Impact.VALUE,
+                old,
+                field,
+                before,
+                after,
+                dtype,
+                f"the same for node-ID {sides.new_node}, but no longer follows the node-ID"
+                if isinstance(before, NodeIdExpr)
+                else f"the same for node-ID {sides.new_node}, now follows the node-ID",
+            )
+        else:
+            yield _value_change(kind, Impact.VALUE, old, field, before, after, dtype)
+
+
+def _same_configured(old: Variable, new: Variable, sides: Sides) -> bool:
+    """A ParameterValue on one side only that states the default (as a DCF made from an EDS does)."""
+    if (old.parameter_value is None) == (new.parameter_value is None):
+        return False
+    return same_value(old.value(sides.old_node), new.value(sides.new_node))
+
+
+def _same_when_resolved(old: Value | None, new: Value | None, sides: Sides) -> bool:
+    """A formula on one side and a number on the other that mean the same for the node-IDs known."""
+    if isinstance(old, NodeIdExpr) == isinstance(new, NodeIdExpr):
+        return False
+    if isinstance(old, NodeIdExpr):
+        return sides.old_node is not None and old.resolve(sides.old_node) == new
+    assert isinstance(new, NodeIdExpr)
+    return sides.new_node is not None and new.resolve(sides.new_node) == old
+
+
+# Entry keys compared as plain fields: (attribute, kind, impact).
+_PLAIN_FIELDS = (
+    ("obj_flags", Kind.OBJ_FLAGS, Impact.VALUE),
+    ("denotation", Kind.DENOTATION, Impact.COSMETIC),
+    ("param_refd", Kind.DCF_ENTRY, Impact.VALUE),
+    ("upload_file", Kind.DCF_ENTRY, Impact.VALUE),
+    ("download_file", Kind.DCF_ENTRY, Impact.VALUE),
+)
+
+
+def _plain_fields(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    for field, kind, impact in _PLAIN_FIELDS:
+        before, after = getattr(old.var, field), getattr(new.var, field)
+        if before != after:
+            yield _plain(kind, impact, old.owner.index, old.subindex, field, before, after)
+
+
+def _canopennode(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    before = old.var.canopennode or CanopenNodeInfo()
+    after = new.var.canopennode or CanopenNodeInfo()
+    for field in CanopenNodeInfo.model_fields:
+        was, now = getattr(before, field), getattr(after, field)
+        if was == now:
+            continue
+        impact, note = Impact.VALUE, ""
+        if field == "disabled":  # a disabled object is left out of the generated OD
+            impact, note = flag_impact(not was, not now, "in the generated CANopenNode OD")
+        yield _plain(
+            Kind.CANOPENNODE,
+            impact,
+            old.owner.index,
+            old.subindex,
+            f"canopennode.{field}",
+            _storable(was),
+            _storable(now),
+            note,
+        )
+
+
+def _section_extras(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    yield from section_changes(old.var, new.var, old.owner.index, old.subindex)
+
+
+# Keys that are fields of the model when readable: kept in `extra` only when their value could not be read.
+_VALUE_KEYS = {
+    "defaultvalue",
+    "parametervalue",
+    "lowlimit",
+    "highlimit",
+    "datatype",
+    "accesstype",
+    "pdomapping",
+    "objecttype",
+    "objflags",
+    "subnumber",
+    "compactsubobj",
+}
+
+
+def section_changes(
+    old: Section, new: Section, index: int | None, subindex: int | None, where: str = ""
+) -> Iterator[Change]:
+    """Keys of no known meaning (`extra`) and comment lines that changed in one section.
+
+    `where` prefixes the field for device-level sections (`device_info.`).
+    """
+    for key in sorted(set(old.extra) | set(new.extra), key=str.lower):
+        before, after = old.extra.get(key), new.extra.get(key)
+        if before != after:
+            impact = Impact.VALUE if key.lower() in _VALUE_KEYS else Impact.COSMETIC
+            yield _plain(Kind.EXTRA_KEY, impact, index, subindex, f"{where}extra.{key}", before, after)
+    if old.comments != new.comments:
+        before_text, after_text = _comment_text(old.comments), _comment_text(new.comments)
+        yield _plain(Kind.COMMENT, Impact.COSMETIC, index, subindex, f"{where}comments", before_text, after_text)
+
+
+def _comment_text(comments: dict[str, list[str]]) -> str:
+    return " / ".join(line.strip() for lines in comments.values() for line in lines)
+
+
+_FIELD_COMPARISONS: tuple[Callable[[Sides, Entry, Entry], Iterator[Change]], ...] = (
+    _name,
+    _data_type,
+    _access,
+    _pdo_mapping,
+    _limits,
+    _values,
+    _plain_fields,
+    _canopennode,
+    _section_extras,
+)

@@ -1,0 +1,101 @@
+"""Impact classification: whether a change of access, range, type or capability narrows what worked before."""
+
+from __future__ import annotations
+
+import math
+
+from ..model import AccessType, DataType, NodeIdExpr, Value, ValueKind
+from .records import Impact
+
+# What each access type lets a user of the device do. `const` reads like `ro`: a constant is still read.
+_CAPABILITIES: dict[AccessType, frozenset[str]] = {
+    AccessType.RO: frozenset({"read"}),
+    AccessType.CONST: frozenset({"read"}),
+    AccessType.WO: frozenset({"write"}),
+    AccessType.RW: frozenset({"read", "write"}),
+    AccessType.RWR: frozenset({"read", "write"}),
+    AccessType.RWW: frozenset({"read", "write"}),
+}
+
+_ABLE = {"read": "readable", "write": "writable"}
+
+
+def access_impact(old: AccessType | None, new: AccessType | None) -> tuple[Impact, str]:
+    """Narrowed (a read or write lost) is breaking, widened compatible, the same abilities cosmetic."""
+    if old is None or new is None:
+        return Impact.VALUE, "access type given on one side only"
+    lost = _CAPABILITIES[old] - _CAPABILITIES[new]
+    gained = _CAPABILITIES[new] - _CAPABILITIES[old]
+    if lost:
+        return Impact.BREAKING, "no longer " + " or ".join(_ABLE[ability] for ability in sorted(lost))
+    if gained:
+        return Impact.COMPATIBLE, "now " + " and ".join(_ABLE[ability] for ability in sorted(gained))
+    return Impact.COSMETIC, "same read/write abilities"
+
+
+def data_type_impact(old: DataType | None, new: DataType | None) -> tuple[Impact, str]:
+    """Any change of the type generated code and a master use is breaking; an alias of the same type is not."""
+    if old is not None and new is not None and old == new:
+        return Impact.COSMETIC, f"both are {old.name}"
+    if old is None or new is None:
+        return Impact.BREAKING, "type changed"
+    notes = []
+    if old.bits != new.bits:
+        notes.append(f"width {_bits(old)} → {_bits(new)}")
+    if {old.kind, new.kind} == {ValueKind.SIGNED, ValueKind.UNSIGNED}:
+        notes.append("signedness changed")
+    elif old.kind != new.kind:
+        notes.append(f"{old.kind.value} → {new.kind.value}")
+    return Impact.BREAKING, ", ".join(notes) or "type changed"
+
+
+def _bits(dtype: DataType) -> str:
+    return f"{dtype.bits} bits" if dtype.bits is not None else "variable"
+
+
+def flag_impact(old: bool | None, new: bool | None, what: str) -> tuple[Impact, str]:
+    """A capability flag (PDO mapping, LSS, boot-up...): taken away is breaking, given compatible."""
+    if bool(old) and not new:
+        return Impact.BREAKING, f"no longer {what}"
+    if bool(new) and not old:
+        return Impact.COMPATIBLE, f"now {what}"
+    return Impact.COSMETIC, "unset reads as no"
+
+
+def count_impact(old: int | None, new: int | None, what: str) -> tuple[Impact, str]:
+    """A number of supported things (PDOs, channels): fewer is breaking, more compatible."""
+    if old is not None and new is not None:
+        if new < old:
+            return Impact.BREAKING, f"fewer {what}"
+        return Impact.COMPATIBLE, f"more {what}"
+    return Impact.VALUE, f"{what} given on one side only"
+
+
+def _number(value: Value | None, node_id: int | None) -> float | None:
+    if isinstance(value, NodeIdExpr):
+        return None if node_id is None else float(value.resolve(node_id))
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return None if isinstance(value, float) and math.isnan(value) else float(value)
+    return None
+
+
+def limit_impact(
+    old: Value | None, new: Value | None, low: bool, dtype: DataType | None, node_id: int | None
+) -> tuple[Impact, str]:
+    """A bound that admits fewer values (narrowed range) is breaking, more values compatible.
+
+    A missing bound is the data type's own (or unbounded); bounds that are not numbers are compared as values.
+    """
+    unbounded = -math.inf if low else math.inf
+    type_range = dtype.int_range() if dtype is not None else None
+    default = float(type_range[0 if low else 1]) if type_range is not None else unbounded
+    before = default if old is None else _number(old, node_id)
+    after = default if new is None else _number(new, node_id)
+    if before is None or after is None:
+        return Impact.VALUE, "limits that are not numbers"
+    if before == after:
+        return Impact.COSMETIC, "same bound"
+    narrowed = after > before if low else after < before
+    if narrowed:
+        return Impact.BREAKING, "range narrowed"
+    return Impact.COMPATIBLE, "range widened"

@@ -1,0 +1,203 @@
+"""The change records every output of `diff` is made from.
+
+Names of kinds and impact classes are stable: scripts and CI match on them (docs/diff.md).
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterator
+from enum import StrEnum
+
+from pydantic import BaseModel, ConfigDict, PrivateAttr
+
+from ..model import Value
+from ..views.pdo import Pdo
+
+
+class Impact(StrEnum):
+    """What a change means for generated code and for a master that uses the device, worst first."""
+
+    BREAKING = "breaking"
+    """Code or a master built for the old description may fail with the new one."""
+    COMPATIBLE = "compatible"
+    """Something was added or widened: what worked before still works."""
+    VALUE = "value"
+    """A default, configured or descriptive value changed: behaviour may differ, interfaces do not."""
+    COSMETIC = "cosmetic"
+    """Names whose identifiers stay, comments, file metadata: nothing a program sees."""
+
+
+IMPACT_ORDER = (Impact.BREAKING, Impact.COMPATIBLE, Impact.VALUE, Impact.COSMETIC)
+
+
+class Kind(StrEnum):
+    """What changed. One value per kind of change; the `field` of a record says which key when several share one."""
+
+    OBJECT_ADDED = "object-added"
+    OBJECT_REMOVED = "object-removed"
+    SUB_ADDED = "sub-added"
+    SUB_REMOVED = "sub-removed"
+    NAME = "name"
+    IDENTIFIER = "identifier"
+    OBJECT_TYPE = "object-type"
+    DATA_TYPE = "data-type"
+    ACCESS = "access"
+    PDO_MAPPING = "pdo-mapping"
+    LOW_LIMIT = "low-limit"
+    HIGH_LIMIT = "high-limit"
+    DEFAULT = "default"
+    PARAMETER_VALUE = "parameter-value"
+    NODEID_FORM = "nodeid-form"
+    OBJ_FLAGS = "obj-flags"
+    DENOTATION = "denotation"
+    DCF_ENTRY = "dcf-entry"
+    CANOPENNODE = "canopennode"
+    OBJECT_LINKS = "object-links"
+    EXTRA_KEY = "extra-key"
+    COMMENT = "comment"
+    IDENTITY = "identity"
+    DEVICE_INFO = "device-info"
+    BAUD_RATE = "baud-rate"
+    DUMMY_USAGE = "dummy-usage"
+    FILE_INFO = "file-info"
+    COMMISSIONING = "commissioning"
+    SECTION = "section"
+    PDO_ADDED = "pdo-added"
+    PDO_REMOVED = "pdo-removed"
+    PDO_COB_ID = "pdo-cob-id"
+    PDO_TRANSMISSION_TYPE = "pdo-transmission-type"
+    PDO_LAYOUT = "pdo-layout"
+
+
+class Change(BaseModel):
+    """One change.
+
+    `name` is the entry's display name (new side, old when removed). `old`/`new` are typed values
+    (None: absent); `old_text`/`new_text` show them to people.
+
+    `index`/`subindex` address the entry (None for device-level changes, subindex None for a whole
+    object); `field` names the key that changed (`default`, `device_info.vendor_number`, `extra.Unit`...).
+    `note` says why the change has its impact (`no longer writable`, `identifier speed → velocity`).
+    """
+
+    model_config = ConfigDict(frozen=True, defer_build=True)
+
+    kind: Kind
+    impact: Impact
+    index: int | None = None
+    subindex: int | None = None
+    name: str = ""
+    field: str = ""
+    old: Value | None = None
+    new: Value | None = None
+    old_text: str = ""
+    new_text: str = ""
+    note: str = ""
+
+
+class ObjectDiff(BaseModel):
+    """The changes of one object, named by its new name (its old one when removed)."""
+
+    model_config = ConfigDict(frozen=True, defer_build=True)
+
+    index: int
+    name: str
+    changes: list[Change]
+
+
+class PdoEntryView(BaseModel):
+    model_config = ConfigDict(frozen=True, defer_build=True)
+
+    index: int
+    subindex: int
+    bit_offset: int
+    bit_length: int
+    name: str
+    data_type: str
+    identifier: str | None
+
+
+class PdoView(BaseModel):
+    """A PDO as configured on one side: COB-ID, transmission type and its mapped entries."""
+
+    model_config = ConfigDict(frozen=True, defer_build=True)
+
+    cob_id: Value | None
+    transmission_type: int | None
+    entries: list[PdoEntryView]
+    _pdo: Pdo | None = PrivateAttr(default=None)
+
+    @classmethod
+    def of(cls, pdo: Pdo) -> PdoView:
+        view = cls(
+            cob_id=pdo.cob_id,
+            transmission_type=pdo.transmission_type,
+            entries=[
+                PdoEntryView(
+                    index=e.index,
+                    subindex=e.subindex,
+                    bit_offset=e.bit_offset,
+                    bit_length=e.bit_length,
+                    name=e.name,
+                    data_type=e.data_type_name,
+                    identifier=e.identifier,
+                )
+                for e in pdo.entries
+            ],
+        )
+        view._pdo = pdo
+        return view
+
+    @property
+    def pdo(self) -> Pdo | None:
+        """The PDO of the PDO view (views/pdo.py), for drawing; None for a record read back from JSON."""
+        return self._pdo
+
+
+class PdoDiff(BaseModel):
+    """One PDO that changed: its changes, and the PDO before and after (None: absent on that side)."""
+
+    model_config = ConfigDict(frozen=True, defer_build=True)
+
+    name: str
+    direction: str
+    number: int
+    comm_index: int
+    map_index: int
+    before: PdoView | None
+    after: PdoView | None
+    changes: list[Change]
+
+
+class DeviceDiff(BaseModel):
+    """Everything that changed from `old` to `new`: device-level changes, objects in index order, PDOs."""
+
+    model_config = ConfigDict(frozen=True, defer_build=True)
+
+    old: str
+    new: str
+    device: list[Change]
+    objects: list[ObjectDiff]
+    pdos: list[PdoDiff]
+
+    def changes(self) -> Iterator[Change]:
+        """Every change record: device, objects, then PDOs."""
+        yield from self.device
+        for obj in self.objects:
+            yield from obj.changes
+        for pdo in self.pdos:
+            yield from pdo.changes
+
+    def counts(self) -> dict[Impact, int]:
+        """Number of changes per impact class, every class present."""
+        counted = Counter(change.impact for change in self.changes())
+        return {impact: counted[impact] for impact in IMPACT_ORDER}
+
+    @property
+    def empty(self) -> bool:
+        return not (self.device or self.objects or self.pdos)
+
+    @property
+    def breaking(self) -> bool:
+        return any(change.impact is Impact.BREAKING for change in self.changes())

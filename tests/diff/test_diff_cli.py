@@ -1,0 +1,210 @@
+"""`cantools-od diff` as users run it: formats, exit codes, hostile inputs, and inside git."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from diffkit import BASE, drop_section, set_key
+
+from cantools_od.changes.jsonout import DiffReport, schema_text
+from cantools_od.resources import resource_dir
+
+from support import cli_command
+
+
+def run(
+    *args: str | Path, cwd: Path | None = None, env: dict[str, str] | None = None
+) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [*cli_command(), *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=120, env=env
+    )
+
+
+@pytest.fixture
+def pair(tmp_path: Path) -> tuple[Path, Path]:
+    """An example and a release of it that drops an object and changes a default."""
+    old, new = tmp_path / "old.eds", tmp_path / "new.eds"
+    old.write_text(BASE)
+    new.write_text(set_key(drop_section(BASE, "1017"), "1005", "DefaultValue", "0x81"))
+    return old, new
+
+
+def test_text_report_is_plain_when_piped(pair: tuple[Path, Path]) -> None:
+    before = [(p.read_bytes(), p.stat().st_mode) for p in pair]
+    result = run("diff", *pair)
+    assert result.returncode == 0, result.stderr
+    assert "\x1b[" not in result.stdout
+    assert "1 breaking, 0 compatible, 1 value, 0 cosmetic" in result.stdout
+    assert "0x1017 Producer heartbeat time" in result.stdout and "removed" in result.stdout
+    assert [(p.read_bytes(), p.stat().st_mode) for p in pair] == before, "inputs must stay untouched"
+    coloured = run("diff", "--color", *pair)
+    assert "\x1b[31m" in coloured.stdout  # breaking in red
+
+
+def test_fail_on(pair: tuple[Path, Path], tmp_path: Path) -> None:
+    old, new = pair
+    assert run("diff", old, new, "--fail-on", "breaking").returncode == 1
+    assert run("diff", old, new, "--fail-on", "any").returncode == 1
+    assert run("diff", old, old, "--fail-on", "any").returncode == 0
+    value_only = tmp_path / "value.eds"
+    value_only.write_text(set_key(BASE, "1005", "DefaultValue", "0x81"))
+    assert run("diff", old, value_only, "--fail-on", "breaking").returncode == 0
+    assert run("diff", old, value_only, "--fail-on", "any").returncode == 1
+
+
+def test_json_report_follows_its_schema(pair: tuple[Path, Path]) -> None:
+    result = run("diff", *pair, "--format", "json")
+    assert result.returncode == 0, result.stderr
+    data = json.loads(result.stdout)
+    report = DiffReport.model_validate(data)
+    assert report.summary.breaking == 1 and report.summary.value == 1
+    schema = json.loads(schema_text())
+    assert set(data) == set(schema["properties"])
+    change = report.objects[-1].changes[0]  # objects in index order: 0x1005, then 0x1017
+    assert (change.kind.value, change.impact.value, change.index) == ("object-removed", "breaking", 0x1017)
+
+
+def test_checked_in_diff_schema_has_not_drifted() -> None:
+    checked_in = (resource_dir("schemas") / "diff.schema.json").read_text()
+    assert checked_in == schema_text(), "regenerate: python -m cantools_od.changes.jsonout > schemas/diff.schema.json"
+
+
+def test_markdown_report(pair: tuple[Path, Path]) -> None:
+    from markdown_it import MarkdownIt
+
+    result = run("diff", *pair, "--format", "markdown")
+    assert result.returncode == 0, result.stderr
+    text = result.stdout
+    assert text.startswith("## Object dictionary changes: `old.eds` → `new.eds`")
+    assert "### Breaking changes (1)" in text and "### Changed values (1)" in text
+    html = MarkdownIt("commonmark").enable("table").render(text)
+    assert "<h3>Breaking changes (1)</h3>" in html and "<strong>Producer heartbeat time</strong>" in html
+
+
+def test_markdown_pdo_table(tmp_path: Path) -> None:
+    old, new = tmp_path / "old.eds", tmp_path / "new.eds"
+    old.write_text(BASE)
+    new.write_text(set_key(BASE, "1A00sub0", "DefaultValue", "2"))
+    text = run("diff", old, new, "--format", "markdown").stdout
+    assert "#### TPDO1" in text and "| Bits | Before | After |" in text
+    assert "| 24-39 | `read_analog_input_16_bit_analog_input_2` INTEGER16 (`0x6401 sub 2`) |  |" in text
+
+
+@pytest.mark.parametrize(
+    "content",
+    [b"", b"\x00\x01binary\xff", b'{"not": "a model"}', b"[2000]\nDataType=zz\n"],
+    ids=["empty", "binary", "foreign-json", "broken"],
+)
+def test_hostile_inputs_never_traceback(tmp_path: Path, content: bytes) -> None:
+    bad, good = tmp_path / "bad.eds", tmp_path / "good.eds"
+    bad.write_bytes(content)
+    good.write_text(BASE)
+    result = run("diff", bad, good)
+    assert result.returncode in (0, 2), result.stderr
+    assert "Traceback" not in result.stderr
+    assert len(result.stderr.strip().splitlines()) <= 1
+    assert bad.read_bytes() == content
+
+
+def test_usage_errors_exit_2(tmp_path: Path) -> None:
+    missing = run("diff", tmp_path / "nope.eds", tmp_path / "nope2.eds")
+    assert missing.returncode == 2 and "cannot read" in missing.stderr and "Traceback" not in missing.stderr
+    assert run("diff", tmp_path / "one.eds").returncode == 2
+    assert run("diff", "--format", "yaml", "a", "b").returncode == 2
+
+
+def test_pins_make_a_rename_cosmetic(tmp_path: Path) -> None:
+    old, new = tmp_path / "old.eds", tmp_path / "new.eds"
+    old.write_text(BASE)
+    new.write_text(set_key(BASE, "1017", "ParameterName", "Heartbeat"))
+    assert run("diff", old, new, "--fail-on", "breaking").returncode == 1
+    pins = tmp_path / "pins.toml"
+    pins.write_text('[identifiers]\n"1017" = "producer_heartbeat_time"\n')
+    result = run("diff", old, new, "--old-pins", pins, "--new-pins", pins, "--fail-on", "breaking")
+    assert result.returncode == 0 and "cosmetic" in result.stdout
+    shutil.copy(pins, tmp_path / "new.ids.toml")  # found beside the file, as `gen` finds it
+    shutil.copy(pins, tmp_path / "old.ids.toml")
+    assert run("diff", old, new, "--fail-on", "breaking").returncode == 0
+
+
+def _git(repo: Path, *args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(["git", *args], cwd=repo, capture_output=True, text=True, check=True, env=env)
+
+
+@pytest.fixture
+def repo(tmp_path: Path) -> Path:
+    if shutil.which("git") is None:
+        pytest.skip("git is not installed")
+    repo = tmp_path / "repo"
+    (repo / "od").mkdir(parents=True)
+    _git(repo, "init", "-q")
+    _git(repo, "config", "user.email", "dev@example.com")
+    _git(repo, "config", "user.name", "dev")
+    (repo / "od" / "device.eds").write_text(BASE)
+    _git(repo, "add", ".")
+    _git(repo, "commit", "-qm", "v1")
+    (repo / "od" / "device.eds").write_text(set_key(BASE, "1017", "AccessType", "ro"))
+    _git(repo, "commit", "-qam", "v2")
+    return repo
+
+
+def test_git_revisions(repo: Path) -> None:
+    result = run("diff", "--git", "HEAD~1", "HEAD", "od/device.eds", cwd=repo)
+    assert result.returncode == 0, result.stderr
+    assert "--- HEAD~1:od/device.eds" in result.stdout
+    assert "access: rw → ro (no longer writable)" in result.stdout
+    (repo / "od" / "device.eds").write_text(BASE)  # the work tree against a revision
+    result = run("diff", "--git", "HEAD", "od/device.eds", "--fail-on", "any", cwd=repo)
+    assert result.returncode == 1 and "now writable" in result.stdout
+    bad = run("diff", "--git", "no-such-rev", "HEAD", "od/device.eds", cwd=repo)
+    assert bad.returncode == 2 and len(bad.stderr.strip().splitlines()) == 1
+
+
+def _script_dir() -> str:
+    return str(Path(cli_command()[0]).parent) if len(cli_command()) == 1 else ""
+
+
+def test_git_external_diff_driver(repo: Path) -> None:
+    """The .gitattributes + git config recipe of docs/diff.md, and GIT_EXTERNAL_DIFF."""
+    env = {**os.environ, "PATH": os.pathsep.join(filter(None, [_script_dir(), os.environ.get("PATH", "")]))}
+    command = " ".join(cli_command()) + " diff"
+    (repo / ".gitattributes").write_text("*.eds diff=cantools-od\n")
+    _git(repo, "config", "diff.cantools-od.command", command)
+    shown = _git(repo, "diff", "HEAD~1", "HEAD", "--", "od/device.eds", env=env).stdout
+    assert "--- a/od/device.eds" in shown and "access: rw → ro" in shown
+    log = _git(repo, "log", "-p", "--ext-diff", "-1", "--", "od/device.eds", env=env).stdout
+    assert "access: rw → ro" in log
+    (repo / ".gitattributes").unlink()
+    env["GIT_EXTERNAL_DIFF"] = command
+    (repo / "od" / "new.eds").write_text(BASE)
+    _git(repo, "add", "od/new.eds")
+    added = _git(repo, "diff", "--cached", env=env).stdout  # a new file: git passes /dev/null as the old side
+    assert "object-added" not in added and "added" in added and "0x1017 Producer heartbeat time" in added
+    _git(repo, "commit", "-qm", "v3")
+    _git(repo, "mv", "od/new.eds", "od/renamed.eds")
+    (repo / "od" / "renamed.eds").write_text(set_key(BASE, "1017", "DefaultValue", "500"))
+    (repo / "NOTES.txt").write_text("not a device description\n")
+    _git(repo, "add", "-A")
+    shown = _git(repo, "diff", "--cached", "-M", env=env).stdout  # a rename: git passes 9 arguments
+    assert "--- a/od/new.eds\n+++ b/od/renamed.eds" in shown and "default: 0x3E8 (1000) → 0x1F4 (500)" in shown
+    assert "+not a device description" in shown  # GIT_EXTERNAL_DIFF sends every file: others as a text diff
+
+
+def test_git_revisions_use_the_pin_file_of_each_revision(repo: Path) -> None:
+    (repo / "od" / "device.ids.toml").write_text('[identifiers]\n"1017" = "producer_heartbeat_time"\n')
+    _git(repo, "add", "od/device.ids.toml")
+    _git(repo, "commit", "-qm", "pin")
+    (repo / "od" / "device.eds").write_text(set_key(BASE, "1017", "ParameterName", "Heartbeat"))
+    _git(repo, "commit", "-qam", "rename")
+    result = run("diff", "--git", "HEAD~1", "HEAD", "od/device.eds", "--fail-on", "breaking", cwd=repo)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "cosmetic" in result.stdout and "identifier producer_heartbeat_time stays" in result.stdout
+    (repo / "od" / "device.ids.toml").unlink()
+    _git(repo, "commit", "-qam", "unpin")
+    unpinned = run("diff", "--git", "HEAD~3", "HEAD", "od/device.eds", "--fail-on", "breaking", cwd=repo)
+    assert unpinned.returncode == 1 and "identifier producer_heartbeat_time → heartbeat" in unpinned.stdout

@@ -221,7 +221,10 @@ def check_round_trips(data: bytes, source: str) -> None:
     fmt = file_format(device)
     assert dumps(device, fmt, "preserve") == data, "preserve of an unchanged device must give its bytes back"
     canonical = dumps(device, fmt, "canonical")
-    reloaded = loads(canonical, fmt=fmt, source=source)
+    reloaded = read_or_refuse(canonical, fmt=fmt, source=source)
+    if reloaded is None:  # a device with nothing in it (`[DeviceInfo` alone) is written as nothing
+        assert not canonical.strip() and not device.objects, canonical
+        return
     assert dumps(reloaded, fmt, "canonical") == canonical, "canonical form is not idempotent"
     assert reloaded.content() == device.content(), "canonical reload changed the content"
 
@@ -246,6 +249,7 @@ NEGATIVE_INDEX = ("insert", SOURCES["io_device.eds"].index(b"1=0x1000") + 2, "-"
 @example("io_device.eds", [DUPLICATE_BAD_KEY])
 @example("io_device.eds", [COMMENT_ON_EMPTY])
 @example("io_device.eds", [NEGATIVE_INDEX])
+@example("io_device.eds", [("insert", 0, "[DeviceInfo"), ("truncate", 11)])
 @given(st.sampled_from(sorted(SOURCES)), st.lists(mutation, min_size=1, max_size=3))
 def test_mutated_files_round_trip(name: str, ops: list[tuple[Any, ...]]) -> None:
     data = SOURCES[name]

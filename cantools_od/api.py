@@ -9,16 +9,18 @@ from typing import Literal
 from pydantic import ValidationError
 
 from . import files
+from .eds.format import IntStyle
 from .eds.reader import read_bytes
 from .model import Device
 from .sniff import NotADeviceDescription, has_section, sniff, xml_refusal
+from .xdd import is_xml
 
-Format = Literal["eds", "dcf", "json"]
+Format = Literal["eds", "dcf", "json", "xdd", "xdc"]
 Style = Literal["preserve", "canonical"]
 
 
 def load(path: str | os.PathLike[str], node_id: int | None = None) -> Device:
-    """Read an EDS, DCF or JSON model file.
+    """Read an EDS, DCF, XDD/XDC or JSON model file.
 
     Raises OSError when the path cannot be read, NotADeviceDescription when its content is no
     device description (see `loads`)."""
@@ -27,13 +29,17 @@ def load(path: str | os.PathLike[str], node_id: int | None = None) -> Device:
 
 
 def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: Format | None = None) -> Device:
-    """Read EDS/DCF/JSON content; the format comes from `fmt`, else the content.
+    """Read EDS/DCF/XDD/XDC/JSON content; the format comes from `fmt`, else the content.
 
     Raises NotADeviceDescription (a ValueError) for content that is none: binary data, an empty
-    file, text without a section, XML, JSON that is not a cantools-od model. Any other EDS/DCF
-    content is read, with what is wrong in it as diagnostics.
+    file, text without a section, XML given as another format, JSON that is not a cantools-od
+    model. Any other content is read, with what is wrong in it as diagnostics.
     """
     raw = data.encode("utf-8") if isinstance(data, str) else data
+    if fmt in ("xdd", "xdc") or (fmt is None and is_xml(raw)):
+        from .xdd.reader import read_bytes as read_xml
+
+        return read_xml(raw, source, node_id=node_id, dcf=True if fmt == "xdc" else None)
     kind = sniff(raw, source)
     if kind == "xml":
         raise xml_refusal(source)
@@ -70,15 +76,23 @@ def _not_a_model(error: ValidationError) -> NotADeviceDescription:
     return NotADeviceDescription(reason, what="a cantools-od model", code="JSN001")
 
 
-def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> bytes:
-    """The device as EDS, DCF or JSON.
+def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve", int_style: IntStyle | None = None) -> bytes:
+    """The device as EDS, DCF, XDD, XDC or JSON.
 
     *preserve* edits the bytes the device was read from, so an unchanged device
     comes back byte for byte; it falls back to *canonical* for devices built
-    in code or read from JSON, and for a DCF made from an EDS.
+    in code or read from JSON, and for a DCF made from an EDS. `int_style`
+    chooses the radix of integers in canonical output (default: canonical).
     """
     if fmt == "json":
         return device.model_dump_json(indent=2).encode("utf-8") + b"\n"
+    if fmt in ("xdd", "xdc"):
+        from .xdd.writer import dumps_xml
+
+        return dumps_xml(device, xdc=fmt == "xdc", preserve=style == "preserve")
+    from .xdd.eds_form import eds_form
+
+    device = eds_form(device)
     dcf = fmt == "dcf"
     if dcf and not device.is_dcf and device.node_id is None:
         raise ValueError("an EDS becomes a DCF for one node: give its node-ID")
@@ -86,10 +100,11 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve") -> byt
     from .eds.writer import canonical_text
 
     making_dcf = dcf and not device.is_dcf  # an EDS becomes a DCF: values are resolved, layout is new
-    if style == "preserve" and device._original is not None and not making_dcf:
+    from_eds = device._original is not None and not is_xml(device._original)
+    if style == "preserve" and from_eds and not making_dcf:
         return preserve(device)
     # A DCF made from an EDS states its node-ID and the values resolved for it.
-    text = canonical_text(device, making_dcf)
+    text = canonical_text(device, making_dcf, int_style or IntStyle())
     try:
         return text.encode("ascii")
     except UnicodeEncodeError:
@@ -107,7 +122,14 @@ def save(device: Device, path: str | os.PathLike[str], fmt: Format | None = None
     return write_if_changed(target, dumps(device, chosen, style))
 
 
-SUFFIXES: dict[str, Format] = {".eds": "eds", ".dcf": "dcf", ".json": "json"}
+SUFFIXES: dict[str, Format] = {
+    ".eds": "eds",
+    ".dcf": "dcf",
+    ".json": "json",
+    ".xdd": "xdd",
+    ".xpd": "xdd",
+    ".xdc": "xdc",
+}
 """File extensions (lower case) and the format each stands for."""
 
 

@@ -59,18 +59,18 @@ def test_bad_content_gives_located_diagnostics(tmp_path: Path) -> None:
 
 
 def test_fmt_check_diff_and_write(tmp_path: Path) -> None:
-    target = tmp_path / "x.eds"
+    target = tmp_path / "x.eds"  # in a folder of its own: no [tool.cantools-od] style applies
     target.write_bytes(b"[2000]\r\nParameterName=X\r\nAccessType=RO\r\nDataType=5\r\n")
-    check = run("fmt", "--check", target)
+    check = run("fmt", "--check", target, cwd=tmp_path)
     assert check.returncode == 1 and "would reformat" in check.stderr
-    diff = run("fmt", "--diff", target)
+    diff = run("fmt", "--diff", target, cwd=tmp_path)
     assert diff.returncode == 1 and "+DataType=0x0005" in diff.stdout
     assert target.read_bytes().startswith(b"[2000]\r\n")  # --check and --diff change nothing
-    assert run("fmt", target).returncode == 0
+    assert run("fmt", target, cwd=tmp_path).returncode == 0
     assert target.read_bytes() == b"[2000]\nParameterName=X\nDataType=0x0005\nAccessType=ro\n"
     mtime = target.stat().st_mtime_ns
-    assert run("fmt", "--check", target).returncode == 0
-    assert run("fmt", target).returncode == 0 and target.stat().st_mtime_ns == mtime
+    assert run("fmt", "--check", target, cwd=tmp_path).returncode == 0
+    assert run("fmt", target, cwd=tmp_path).returncode == 0 and target.stat().st_mtime_ns == mtime
 
 
 def test_convert_between_formats(tmp_path: Path) -> None:

@@ -26,6 +26,15 @@ DefaultValue=fast
 """
 
 
+BAD_XDD = """<?xml version="1.0" encoding="utf-8"?>
+<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1">
+  <ISO15745Profile><ProfileBody><ApplicationLayers><CANopenObjectList>
+    <CANopenObject index="2000" name="Speed" objectType="7" dataType="0006" accessType="rw" defaultValue="fast" />
+  </CANopenObjectList></ApplicationLayers></ProfileBody></ISO15745Profile>
+</ISO15745ProfileContainer>
+"""
+
+
 def pre_commit() -> str:
     found = shutil.which("pre-commit", path=str(Path(sys.executable).parent)) or shutil.which("pre-commit")
     if found is None:
@@ -48,6 +57,7 @@ def workspace(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str,
     shutil.copy(EXAMPLES / "io_device.eds", repo / "good.eds")
     (repo / "bad.eds").write_text(BAD)
     (repo / "messy.eds").write_bytes(b"[2000]\r\nParameterName=X\r\nAccessType=RO\r\nDataType=5\r\n")
+    (repo / "bad.xdd").write_text(BAD_XDD)
     git(repo, "add", ".")
     env = dict(os.environ, PRE_COMMIT_HOME=str(tmp_path_factory.mktemp("pre-commit-home")), PRE_COMMIT_COLOR="never")
     return repo, env
@@ -81,3 +91,9 @@ def test_fmt_hook_rewrites_and_then_passes(workspace: tuple[Path, dict[str, str]
     assert (repo / "messy.eds").read_bytes() == b"[2000]\nParameterName=X\nDataType=0x0005\nAccessType=ro\n"
     second = try_repo(workspace, "cantools-od-fmt", "messy.eds")
     assert second.returncode == 0, second.stdout
+
+
+def test_lint_hook_checks_xdd_files_at_their_xml_line(workspace: tuple[Path, dict[str, str]]) -> None:
+    result = try_repo(workspace, "cantools-od-lint", "bad.xdd")
+    assert result.returncode == 1, result.stdout + result.stderr
+    assert "bad.xdd:4:107: error:" in result.stdout and "[EDS030]" in result.stdout

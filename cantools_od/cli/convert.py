@@ -1,4 +1,4 @@
-"""`cantools-od convert`: between EDS, DCF and JSON, by file extension."""
+"""`cantools-od convert`: between EDS, DCF, XDD, XDC and JSON, by file extension."""
 
 from __future__ import annotations
 
@@ -23,13 +23,17 @@ from .common import (
 @click.command(name="convert")
 @click.argument("source", type=click.Path(dir_okay=False))
 @click.option(
-    "-o", "--output", required=True, type=click.Path(dir_okay=False), help="File to write (.eds, .dcf, .json)."
+    "-o",
+    "--output",
+    required=True,
+    type=click.Path(dir_okay=False),
+    help="File to write (.eds, .dcf, .xdd, .xpd, .xdc, .json).",
 )
 @node_id_option
 def command(source: str, output: str, node_id: int | None) -> None:
     """Convert SOURCE to OUTPUT. The same format in and out keeps the original
-    layout; a DCF made from an EDS needs --node-id. A SOURCE with errors is not
-    converted (exit 1)."""
+    layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id. A SOURCE
+    with errors is not converted (exit 1)."""
     from ..api import dumps, format_for
 
     check_extension(source, "input")

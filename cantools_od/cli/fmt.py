@@ -9,18 +9,33 @@ from pathlib import Path
 import click
 
 from ..model import Severity
-from .common import EXIT_FINDINGS, EXIT_OK, errors_to_fix, read_device, report, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, read_device, report, write_outputs
+
+RADIXES = ("canonical", "as-written", "hex", "decimal")
 
 
 @click.command(name="fmt")
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @click.option("--check", is_flag=True, help="Change nothing; exit 1 when a file would change.")
 @click.option("--diff", "show_diff", is_flag=True, help="Change nothing; print what would change as a diff.")
-def command(files: tuple[str, ...], check: bool, show_diff: bool) -> None:
+@click.option(
+    "--radix",
+    type=click.Choice(RADIXES),
+    help="How integers are spelled; replaces integer-radix of [tool.cantools-od] (default: canonical).",
+)
+def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | None) -> None:
     """Rewrite FILES in canonical form (CiA 306 key order and spelling, sorted
-    sections, consistent hex, LF line ends). A file is written only when its
+    sections, integers by the radix style, LF line ends), spelled so that every
+    peer reader reads what the original said. A file is written only when its
     content changes, and never when it has errors (exit 1)."""
     from ..api import dumps, format_for
+    from ..lint.config import load_int_style
+
+    try:
+        int_style = load_int_style(Path.cwd(), radix)
+    except ValueError as error:
+        click.echo(f"error: configuration: {error}", err=True)
+        sys.exit(EXIT_USAGE)
 
     changed = refused = 0
     for name in files:
@@ -35,7 +50,7 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool) -> None:
             continue
         path = Path(name)
         original = path.read_bytes()
-        formatted = dumps(device, format_for(path), style="canonical")
+        formatted = dumps(device, format_for(path), style="canonical", int_style=int_style)
         if formatted == original:
             continue
         changed += 1

@@ -1,6 +1,6 @@
-# CMake integration of cantools-od: generate code from a CANopen EDS/DCF at build time.
+# CMake integration of cantools-od: generate code from a CANopen EDS/DCF or XDD/XDC at build time.
 #
-#   cantools_od_generate(<target> EDS <file>
+#   cantools_od_generate(<target> EDS <file> | XDD <file>
 #                        [NAME <name>] [TARGETS c|rust|python|markdown ...]
 #                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD] [KEEP_GOING])
 #
@@ -8,6 +8,8 @@
 # cantools-od installation) changes. For the `c` target (the default), <name>.c is added to
 # <target>'s sources and OUTPUT_DIR to its include directories, so `#include "<name>.h"` works.
 # Other targets are generated into OUTPUT_DIR as part of building <target>.
+# XDD <file> names a CiA 311 XML device description (.xdd, .xdc, or CANopenEditor's .xpd)
+# instead of an EDS; everything below said of the EDS holds for it.
 #
 #   NAME        base name of the files and C symbols; default: the EDS file name without its
 #               extension, lower-cased, with every run of other characters than letters and
@@ -86,15 +88,21 @@ function(_cantools_od_default_name eds out)
 endfunction()
 
 function(cantools_od_generate target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD;KEEP_GOING" "EDS;NAME;NODE_ID;OUTPUT_DIR;PINS" "TARGETS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD;KEEP_GOING" "EDS;XDD;NAME;NODE_ID;OUTPUT_DIR;PINS" "TARGETS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "cantools_od_generate: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
   if(NOT TARGET "${target}")
     message(FATAL_ERROR "cantools_od_generate: ${target} is not a target")
   endif()
+  if(arg_EDS AND arg_XDD)
+    message(FATAL_ERROR "cantools_od_generate(${target}): give EDS <file> or XDD <file>, not both")
+  endif()
+  if(arg_XDD)
+    set(arg_EDS "${arg_XDD}")  # the generator tells the formats apart by their content
+  endif()
   if(NOT arg_EDS)
-    message(FATAL_ERROR "cantools_od_generate(${target}): EDS <file> is required")
+    message(FATAL_ERROR "cantools_od_generate(${target}): EDS <file> (or XDD <file>) is required")
   endif()
   get_filename_component(_eds "${arg_EDS}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
   if(arg_NAME)

@@ -26,6 +26,7 @@ from .decode import decode
 from .dialect import detect_dialect, directive
 from .report import Report
 from .sections import Collected, collect, raw_section
+from .storage import read_storage_groups
 from .typed_values import type_values
 from .values import parse_int
 
@@ -144,6 +145,7 @@ def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
     apply_compact_sections(device, compact, report)
     expand_compact_pdo(device)
     device.objects = dict(sorted(device.objects.items()))
+    read_storage_groups(device)
     if device.commissioning is not None:
         device.node_id = device.commissioning.node_id
         device.is_dcf = True

@@ -9,15 +9,39 @@ from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
 from ..model.device import Commissioning, DeviceInfo, FileInfo
 from . import ini
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
+from .decode import decode_as
 from .dialect import detect_dialect
-from .format import format_key, format_value
-from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec
+from .format import CANONICAL, IntStyle, format_key, format_value
+from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec, Kind
+from .storage import storage_comments
+
+
+class Hints:
+    """The text each key had in the file the device was read from, found by the key's recorded position.
+
+    Only a hint: the writer keeps a spelling choice from it (radix, an integral REAL) when the model's
+    value is still what that text reads as.
+    """
+
+    def __init__(self, original: bytes | None) -> None:
+        self._lines = ini.split_lines(decode_as(original)[0]) if original else []
+
+    def text(self, section: Section, key: str) -> str | None:
+        where = section.origin.keys.get(key) if section.origin is not None and self._lines else None
+        if where is None or not 0 < where[0] <= len(self._lines) or where[2] < 1:
+            return None
+        return self._lines[where[0] - 1][where[2] - 1 :].strip()
+
+
+_NO_HINTS = Hints(None)
 
 
 @dataclass(frozen=True)
 class _Style:
     dcf: bool
     as_written: bool
+    ints: IntStyle = CANONICAL
+    hints: Hints = _NO_HINTS
 
 
 @dataclass
@@ -27,16 +51,23 @@ class OutSection:
     comments: dict[str, list[str]] = field(default_factory=dict)
 
 
-def sections(device: Device, dcf: bool = False, as_written: bool = False) -> list[OutSection]:
+def sections(
+    device: Device, dcf: bool = False, as_written: bool = False, ints: IntStyle = CANONICAL
+) -> list[OutSection]:
     """The canonical sections of a device, in order. `dcf` adds commissioning and resolved values;
-    `as_written` keeps `$NODEID` formulas spelled as read (the preserving writer compares spellings)."""
-    style = _Style(dcf, as_written)
+    `as_written` keeps `$NODEID` formulas spelled as read (the preserving writer compares spellings);
+    `ints` chooses the radix of integers. Canonical output (not `as_written`) keeps keys the source
+    had with an empty value: peers read `DefaultValue=` as an empty string or no value, not as absent."""
+    # Spelling hints come from INI text only: an XDD's recorded positions point into XML.
+    from_ini = device.file_format == "eds"
+    hints = Hints(device._original) if from_ini and not as_written else _NO_HINTS
+    style = _Style(dcf, as_written, ints, hints)
     # [FileInfo] and [DeviceInfo] are mandatory, but are not made up when the model has nothing for them.
     out = [
         section
         for section in (
-            _keyed("FileInfo", device.file_info, FILE_INFO_KEYS),
-            _keyed("DeviceInfo", device.device_info, DEVICE_INFO_KEYS),
+            _keyed("FileInfo", device.file_info, FILE_INFO_KEYS, style),
+            _keyed("DeviceInfo", device.device_info, DEVICE_INFO_KEYS, style),
         )
         if section.entries or section.comments
     ]
@@ -44,7 +75,7 @@ def sections(device: Device, dcf: bool = False, as_written: bool = False) -> lis
         commissioning = device.commissioning or Commissioning()
         if dcf and device.node_id is not None:
             commissioning = commissioning.model_copy(update={"node_id": device.node_id})
-        out.append(_keyed(COMMISSIONING, commissioning, COMMISSIONING_KEYS))
+        out.append(_keyed(COMMISSIONING, commissioning, COMMISSIONING_KEYS, style))
     if device.dummy_usage is not None:
         usage = device.dummy_usage
         entries = {f"Dummy{index:04X}": "1" if on else "0" for index, on in sorted(usage.enabled.items())}
@@ -98,20 +129,40 @@ def _explicit_indices(device: Device) -> set[int]:
 def _with_extra(name: str, entries: dict[str, str], section: Section) -> OutSection:
     for key, text in section.extra.items():
         entries.setdefault(key, text)
+    if isinstance(section, Variable) and section.canopennode is not None:
+        return OutSection(name, entries, storage_comments(section, list(entries)))
     return OutSection(name, entries, dict(section.comments))
 
 
-def _keyed(name: str, model: FileInfo | DeviceInfo | Commissioning, table: dict[str, KeySpec]) -> OutSection:
+def _keyed(
+    name: str, model: FileInfo | DeviceInfo | Commissioning, table: dict[str, KeySpec], style: _Style
+) -> OutSection:
     entries: dict[str, str] = {}
     data: dict[str, Any] = dict(model.__dict__)
-    for spelling, attr, _ in table.values():
+    for spelling, attr, kind in table.values():
         if attr.startswith("baud_rates."):
             value: Any = data["baud_rates"].get(int(attr.split(".")[1]))
         else:
             value = data[attr]
         if value is not None:
-            entries[spelling] = format_key(spelling, value)
+            entries[spelling] = format_key(
+                spelling, value, style.ints.radix(spelling), style.hints.text(model, spelling)
+            )
+        elif _kept_empty(model, spelling, kind, style):
+            entries[spelling] = ""
     return _with_extra(name, entries, model)
+
+
+def _kept_empty(section: Section, key: str, kind: Kind, style: _Style) -> bool:
+    """Whether canonical output writes `key=` for a key with no value. Kept in place: a commented key,
+    and an empty typed value or AccessType the source had (python-canopen reads `DefaultValue=` as `''`
+    or `b''`, not as absent). Dropped: other empty numbers and booleans, which no peer reads a value
+    from (python-canopen fails on `int('')`). A key whose value could not be read is in `extra`."""
+    if style.as_written or key in section.extra:
+        return False
+    if key in section.comments:
+        return True
+    return kind in (Kind.VALUE, Kind.ACCESS) and section.origin is not None and key in section.origin.keys
 
 
 def _variable_entries(device: Device, var: Variable, owner: Object, style: _Style) -> dict[str, str]:
@@ -129,12 +180,15 @@ def _variable_entries(device: Device, var: Variable, owner: Object, style: _Styl
         ):
             value = device.resolve(var.default)  # a DCF states the value for its node-ID
         if value is None:
+            if _kept_empty(var, spelling, kind, style):
+                entries[spelling] = ""
             continue
+        radix, hint = style.ints.radix(spelling), style.hints.text(var, spelling)
         if kind.value == "value":
             dtype = dtype or device.entry_type(var, owner)
-            entries[spelling] = format_value(value, dtype, device.dialect, style.as_written)
+            entries[spelling] = format_value(value, dtype, device.dialect, style.as_written, radix, hint)
         else:
-            entries[spelling] = format_key(spelling, value)
+            entries[spelling] = format_key(spelling, value, radix, hint)
     return entries
 
 
@@ -173,7 +227,8 @@ def _compact_entries(
     if sub.name != implicit_sub_name(obj, subindex):
         compact["Name"][key] = sub.name
     if sub.parameter_value is not None:
-        compact["Value"][key] = format_value(sub.parameter_value, dtype, device.dialect, style.as_written)
+        radix = style.ints.radix("ParameterValue")
+        compact["Value"][key] = format_value(sub.parameter_value, dtype, device.dialect, style.as_written, radix)
     if sub.denotation is not None:
         compact["Denotation"][key] = sub.denotation
 
@@ -218,8 +273,8 @@ def _as_read(out: list[OutSection]) -> ini.IniFile:
     )
 
 
-def canonical_text(device: Device, dcf: bool = False) -> str:
-    out = sections(device, dcf)
+def canonical_text(device: Device, dcf: bool = False, ints: IntStyle = CANONICAL) -> str:
+    out = sections(device, dcf, ints=ints)
     text = render(out, device.trailing_comments)
     if detect_dialect(_as_read(out)) is not device.dialect:
         # Quoting and REAL forms depend on the dialect: say it where the text alone would mislead.

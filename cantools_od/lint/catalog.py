@@ -5,7 +5,19 @@ from __future__ import annotations
 import importlib
 from functools import cache
 
-FAMILIES = ("reader", "syntax", "objects", "dcf", "objlists", "values", "identity", "pdo", "cobid", "portability")
+FAMILIES = (
+    "reader",
+    "xdd",
+    "syntax",
+    "objects",
+    "dcf",
+    "objlists",
+    "values",
+    "identity",
+    "pdo",
+    "cobid",
+    "portability",
+)
 
 
 @cache

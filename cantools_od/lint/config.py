@@ -4,19 +4,32 @@
 select = ["EDS", "PDO"]            # codes or code prefixes; default: every rule
 ignore = ["EDS032"]
 per-file-ignores = { "vendor/*.eds" = ["EDS003", "COB006"] }
+integer-radix = "as-written"       # how `fmt` spells integers; or a table by key (see README, "fmt")
 """
 
 from __future__ import annotations
 
+import difflib
 import fnmatch
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
+from ..eds.format import IntStyle, Radix
+from ..eds.keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, Kind
 from ..names import UnknownName, check_names
 
-CONFIG_KEYS = ("select", "ignore", "per-file-ignores")
-"""The keys of `[tool.cantools-od]`; any other is an error, so that a misspelt one is not ignored."""
+KEYS = ("select", "ignore", "per-file-ignores", "integer-radix")
+"""Every key `[tool.cantools-od]` may hold; any other is an error, so that a misspelt one is not ignored."""
+
+# Keys whose value is an integer `fmt` spells: the typed values and the integer keys of the CiA 306 tables.
+INTEGER_KEYS = tuple(
+    spelling
+    for table in (OBJECT_KEYS, FILE_INFO_KEYS, DEVICE_INFO_KEYS, COMMISSIONING_KEYS)
+    for spelling, _, kind in table.values()
+    if kind in (Kind.VALUE, Kind.INT, Kind.OBJECT_TYPE)
+)
 
 
 @dataclass(frozen=True)
@@ -60,11 +73,11 @@ def find_pyproject(start: Path) -> Path | None:
     return None
 
 
-def load_selection(start: Path) -> Selection:
-    """The `[tool.cantools-od]` table of the nearest pyproject.toml; raises ValueError when malformed."""
+def _table(start: Path) -> tuple[Path | None, dict[str, Any]]:
+    """The nearest pyproject.toml and its `[tool.cantools-od]` table; raises ValueError when malformed."""
     path = find_pyproject(start.resolve())
     if path is None:
-        return Selection()
+        return None, {}
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
@@ -73,9 +86,51 @@ def load_selection(start: Path) -> Selection:
     if not isinstance(table, dict):
         raise ValueError(f"{path}: [tool.cantools-od] must be a table")
     try:
-        check_names("key in [tool.cantools-od]", table, CONFIG_KEYS)
+        check_names("key in [tool.cantools-od]", table, KEYS)
     except UnknownName as error:
         raise ValueError(f"{path}: {error}") from None
+    return path, table
+
+
+def load_int_style(start: Path, override: str | None = None) -> IntStyle:
+    """How `fmt` spells integers: `integer-radix` of the nearest `[tool.cantools-od]`, one radix or a table by
+    key (`"*"` for the keys not named); `override` (the command line's) replaces it. Raises ValueError."""
+    if override is not None:
+        return IntStyle(_radix(override, "--radix"))
+    path, table = _table(start)
+    value = table.get("integer-radix")
+    if value is None:
+        return IntStyle()
+    where = f"{path}: [tool.cantools-od] integer-radix"
+    if isinstance(value, str):
+        return IntStyle(_radix(value, where))
+    if not isinstance(value, dict):
+        raise ValueError(f"{where} must be a radix or a table of key = radix")
+    by_key: dict[str, Radix] = {}
+    for key, radix in value.items():
+        if key != "*" and key not in INTEGER_KEYS:
+            raise ValueError(f"{where}: {key!r} is not an integer key{_closest(key, INTEGER_KEYS)}")
+        by_key[key] = _radix(radix, f"{where}.{key}")
+    return IntStyle(by_key.pop("*", Radix.CANONICAL), by_key)
+
+
+def _radix(value: object, where: str) -> Radix:
+    names = tuple(r.value for r in Radix)
+    if not isinstance(value, str) or value not in names:
+        raise ValueError(f"{where}: {value!r} is not one of {', '.join(names)}{_closest(str(value), names)}")
+    return Radix(value)
+
+
+def _closest(name: str, names: tuple[str, ...]) -> str:
+    found = difflib.get_close_matches(name, names, n=1)
+    return f" (did you mean {found[0]!r}?)" if found else ""
+
+
+def load_selection(start: Path) -> Selection:
+    """The `[tool.cantools-od]` table of the nearest pyproject.toml; raises ValueError when malformed."""
+    path, table = _table(start)
+    if path is None:
+        return Selection()
     return Selection(
         select=_codes(table, "select", path),
         ignore=_codes(table, "ignore", path),

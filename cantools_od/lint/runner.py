@@ -9,6 +9,9 @@ from .reader import reader_fix
 from .rules import RULES, Context, Finding, LintOptions
 from .suppress import Suppressions
 
+# Families about the CiA 306 INI text itself (key spelling, object lists, EDS reader disagreements):
+# an XDD/XDC has none of it.
+_EDS_TEXT_FAMILIES = frozenset({"syntax", "objlists", "portability"})
 _ORDER = {Severity.ERROR: 0, Severity.WARNING: 1, Severity.INFO: 2}
 
 
@@ -26,6 +29,8 @@ def lint(device: Device, options: LintOptions | None = None, selection: Selectio
     ]
     for rule in RULES.values():
         if rule.check is None or not selection.enabled(rule.code, file):
+            continue
+        if device.file_format != "eds" and rule.family in _EDS_TEXT_FAMILIES:
             continue
         try:
             findings.extend(f for f in rule.check(context) if selection.enabled(f.code, file))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from enum import StrEnum
+from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr
 
@@ -117,6 +118,8 @@ class Device(BaseModel):
     trailing_comments: list[str] = []
     """Comment lines after the last entry of the file."""
     dialect: Dialect = Dialect.CIA306
+    file_format: Literal["eds", "xdd"] = "eds"
+    """The syntax the device was read from: CiA 306 INI text (EDS/DCF) or CiA 311 XML (XDD/XDC)."""
     is_dcf: bool = False
     node_id: int | None = None
     """The node-ID `$NODEID` stands for: given when loading, else the DCF's NodeID."""
@@ -172,12 +175,12 @@ class Device(BaseModel):
         return dtype
 
     def content(self) -> dict[str, object]:
-        """The model as JSON data without source positions, diagnostics and dialect.
+        """The model as JSON data without source positions, diagnostics, dialect and file format.
 
         Two devices describe the same thing when their contents are equal,
         whichever files and layouts they were read from.
         """
-        data = self.model_dump(mode="json", exclude={"diagnostics", "source", "dialect"})
+        data = self.model_dump(mode="json", exclude={"diagnostics", "source", "dialect", "file_format"})
         stripped = _strip_origins(data)
         assert isinstance(stripped, dict)
         return stripped

@@ -107,23 +107,52 @@ int main(void) { return IO_DEVICE_PDO_MAX_DLC == 64u && IO_DEVICE_OBJECT_COUNT >
 """
 
 
-def test_library_with_include_output_dir_and_more_targets(tmp_path: Path) -> None:
-    """include(cantools_od.cmake), a library whose users get the include folder, TARGETS c markdown."""
+def _configure_ninja(tmp_path: Path, project: str, app: str, definition: str) -> Path:
+    """A project of CMakeLists.txt and app.c, configured with Ninja and the -D definition; its build folder."""
     tool("cmake")
     tool("gcc")
     tool("ninja")
     source, build = tmp_path / "source", tmp_path / "build"
     source.mkdir()
-    (source / "CMakeLists.txt").write_text(LIBRARY_PROJECT, encoding="utf-8")
-    (source / "app.c").write_text(LIBRARY_APP, encoding="utf-8")
+    (source / "CMakeLists.txt").write_text(project, encoding="utf-8")
+    (source / "app.c").write_text(app, encoding="utf-8")
     args = cmake_args()
     folder = args[0].split("=", 1)[1]
-    eds = ROOT / "eds" / "io_device.eds"
     run(["cmake", "-S", str(source), "-B", str(build), "-G", "Ninja", f"-DCANTOOLS_OD_CMAKE_DIR={folder}",
-         f"-DEDS={eds}", *args[1:]], tmp_path)  # fmt: skip
+         definition, *args[1:]], tmp_path)  # fmt: skip
+    return build
+
+
+def test_library_with_include_output_dir_and_more_targets(tmp_path: Path) -> None:
+    """include(cantools_od.cmake), a library whose users get the include folder, TARGETS c markdown."""
+    build = _configure_ninja(tmp_path, LIBRARY_PROJECT, LIBRARY_APP, f"-DEDS={ROOT / 'eds' / 'io_device.eds'}")
     output = run(["cmake", "--build", str(build)], tmp_path)
     assert "Generating markdown for io_device" in output
     names = {p.name for p in (build / "generated").iterdir()}
     assert {"io_device.c", "io_device.h"} <= names and any(n.endswith(".md") for n in names)
     run([str(build / "app")], tmp_path)  # exits 0: the library's include folder and CAN FD reached the app
     assert_nothing_to_do(run(["cmake", "--build", str(build)], tmp_path), "Ninja")
+
+
+XDD_PROJECT = """
+cmake_minimum_required(VERSION 3.20)
+project(xdd_firmware LANGUAGES C)
+include("${CANTOOLS_OD_CMAKE_DIR}/cantools_od.cmake")
+add_executable(app app.c)
+cantools_od_generate(app XDD "${XDD}" NAME demo)
+"""
+
+XDD_APP = """
+#include "demo.h"
+int main(void) { return DEMO_OBJECT_COUNT > 0u && DEMO_DEVICE_TYPE_INDEX == 0x1000u ? 0 : 1; }
+"""
+
+
+def test_xdd_as_the_input(tmp_path: Path) -> None:
+    """cantools_od_generate(... XDD <file>): CANopenDemo's demoDevice.xdd builds into a firmware."""
+    xdd = ROOT.parent / "shared" / "third_party" / "CANopenDemo-demo" / "demoDevice.xdd"
+    if not xdd.is_file():
+        pytest.skip("../shared is absent")
+    build = _configure_ninja(tmp_path, XDD_PROJECT, XDD_APP, f"-DXDD={xdd}")
+    assert "Generating demo.h and demo.c from demoDevice.xdd" in run(["cmake", "--build", str(build)], tmp_path)
+    run([str(build / "app")], tmp_path)

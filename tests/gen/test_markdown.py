@@ -97,7 +97,7 @@ def test_device_summary_pdos_and_provenance() -> None:
     assert grids[1][1:] == [[str(b)] + [n] * 8 for b, n in enumerate("12233")]  # TPDO1: 8 + 16 + 16 bits
     assert grids[0][2] == ["1"] + ["2"] * 8  # RPDO1's dummy entry
     objects = {row[0]: row for row in next(t for t in cells if t[0][0] == "Index")[1:]}
-    assert objects["1018h"][-1] == "io_device.eds:224"
+    assert objects["1018h"][-1] == "io_device.eds:223"
     assert objects["2000h"][5] == "TPDO2" and objects["1001h"][5] == "mappable" and objects["1000h"][5] == "no"
     assert objects["1014h"][6] == "$NODEID+0x80"
     details = next(t for t in cells if t[0][0] == "Sub" and t[1][-2] == "device_settings_highest_sub_index_supported")
@@ -110,7 +110,7 @@ def test_device_summary_pdos_and_provenance() -> None:
         "\u2014",
         "device_settings_input_filter_enable",
     ]
-    assert details[3][6] == "1..1000" and details[3][-1] == "io_device.eds:549"
+    assert details[3][6] == "1..1000" and details[3][-1] == "io_device.eds:548"
 
 
 def test_node_id_makes_cob_ids_numeric(tmp_path: Path) -> None:

@@ -36,7 +36,9 @@ def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: 
     model. Any other content is read, with what is wrong in it as diagnostics.
     """
     raw = data.encode("utf-8") if isinstance(data, str) else data
-    if fmt in ("xdd", "xdc") or (fmt is None and is_xml(raw)):
+    # XML is read as XDD/XDC unless its name says EDS/DCF: then `fmt` would write INI over it.
+    named_ini = Path(source).suffix.lower() in (".eds", ".dcf")
+    if fmt in ("xdd", "xdc") or (fmt is None and is_xml(raw) and not named_ini):
         from .xdd.reader import read_bytes as read_xml
 
         return read_xml(raw, source, node_id=node_id, dcf=True if fmt == "xdc" else None)

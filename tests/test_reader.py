@@ -257,10 +257,15 @@ def test_garbage_never_raises(data: bytes) -> None:
     loads(data)
 
 
-@pytest.mark.parametrize("data", [b"", b" \r\n", b"\x00\xff\xfe", b"=", b"ParameterName=x\n", b"<?xml?><a/>"])
+@pytest.mark.parametrize("data", [b"", b" \r\n", b"\x00\xff\xfe", b"=", b"ParameterName=x\n"])
 def test_what_is_no_device_description_is_refused(data: bytes) -> None:
     with pytest.raises(NotADeviceDescription, match=r"^not an EDS/DCF file: "):
         loads(data)
+
+
+def test_xml_given_as_an_eds_is_refused() -> None:
+    with pytest.raises(NotADeviceDescription, match=r"^not an EDS/DCF file: XML"):
+        loads(b"<?xml version='1.0'?><a/>", fmt="eds")
 
 
 def test_orphan_sub_object_section_is_kept_and_reported() -> None:

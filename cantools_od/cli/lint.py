@@ -29,6 +29,9 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")
 @click.option("--network", is_flag=True, help="Also check the files together as one network (DCFs).")
+@click.option(
+    "--profile", type=click.Choice(["canopennode"]), help="Also apply a target's rules (canopennode: the CNO codes)."
+)
 def command(
     files: tuple[str, ...],
     fmt: str,
@@ -38,6 +41,7 @@ def command(
     can_fd: bool,
     node_id: int | None,
     network: bool,
+    profile: str | None,
 ) -> None:
     """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
     from ..api import dumps, format_for
@@ -56,7 +60,7 @@ def command(
         click.echo(f"error: --select/--ignore: {error}", err=True)
         sys.exit(EXIT_USAGE)
     selection = selection.merged(_codes(select), _codes(ignore))
-    options = LintOptions(can_fd=can_fd, node_id=node_id)
+    options = LintOptions(can_fd=can_fd, node_id=node_id, profile=profile)
     findings: list[Finding] = []
     devices = []
     for name in files:

@@ -17,6 +17,7 @@ FAMILIES = (
     "pdo",
     "cobid",
     "portability",
+    "canopennode",
 )
 
 

@@ -38,6 +38,8 @@ class Finding:
 class LintOptions:
     can_fd: bool = False
     node_id: int | None = None
+    profile: str | None = None
+    """A target's extra rules to run too: "canopennode" (lint --profile, and gen -t canopennode)."""
 
     @property
     def max_pdo_bits(self) -> int:

@@ -12,7 +12,7 @@ from ..resources import resource_dir
 from . import escape
 
 # target name → module in this package with `render(view) -> dict[str, str]`
-TARGETS = {"c": "c", "rust": "rust", "python": "python", "markdown": "markdown"}
+TARGETS = {"c": "c", "rust": "rust", "python": "python", "markdown": "markdown", "canopennode": "canopennode"}
 
 Renderer = Callable[..., dict[str, str]]
 

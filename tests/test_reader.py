@@ -9,6 +9,7 @@ import pytest
 
 from cantools_od import load, loads
 from cantools_od.model import AccessType, Dialect, NodeIdExpr, ObjectKind, RawValue, Severity, TimeValue
+from cantools_od.sniff import NotADeviceDescription
 
 
 def codes(device: object) -> list[str]:
@@ -251,9 +252,20 @@ def test_unreadable_path_raises_oserror(tmp_path: Path) -> None:
         load(tmp_path / "missing.eds")
 
 
-@pytest.mark.parametrize("data", [b"", b"\x00\xff\xfe", b"[", b"=", b"[]\n=\n", b"[1000sub]\n", b"[FFFFsubFFF]\n"])
+@pytest.mark.parametrize("data", [b"[", b"[]\n=\n", b"[1000sub]\n", b"[FFFFsubFFF]\n", b"x\n[2000"])
 def test_garbage_never_raises(data: bytes) -> None:
     loads(data)
+
+
+@pytest.mark.parametrize("data", [b"", b" \r\n", b"\x00\xff\xfe", b"=", b"ParameterName=x\n"])
+def test_what_is_no_device_description_is_refused(data: bytes) -> None:
+    with pytest.raises(NotADeviceDescription, match=r"^not an EDS/DCF file: "):
+        loads(data)
+
+
+def test_xml_given_as_an_eds_is_refused() -> None:
+    with pytest.raises(NotADeviceDescription, match=r"^not an EDS/DCF file: XML"):
+        loads(b"<?xml version='1.0'?><a/>", fmt="eds")
 
 
 def test_orphan_sub_object_section_is_kept_and_reported() -> None:

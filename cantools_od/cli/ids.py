@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import click
 
 from ..model import Severity
-from .common import identifiers_for, pins_option, read_device, report
+from .common import EXIT_FINDINGS, errors_to_fix, identifiers_for, pins_option, read_device, report, write_outputs
 
 
 @click.command(name="ids")
@@ -21,12 +22,14 @@ def command(file: str, pin_file: str | None, output: str | None) -> None:
     pin file. Save it as FILE's stem + .ids.toml (or pass it with --pins) to
     freeze names: generators then keep them when display names change.
     Pins already in that file are kept, so `ids FILE -o FILE.ids.toml` updates it."""
-    from ..api import write_if_changed
-
     device = read_device(file)
     report(device.diagnostics, minimum=Severity.ERROR)
+    problems = errors_to_fix(device)
+    if problems:  # identifiers of a file read only in part would pin the wrong names
+        click.echo(f"{file}: error: no identifiers printed: {problems}", err=True)
+        sys.exit(EXIT_FINDINGS)
     text = identifiers_for(device, file, pin_file).to_toml()
     if output is None:
         click.echo(text, nl=False)
     else:
-        write_if_changed(Path(output), text.encode("utf-8"))
+        write_outputs({Path(output): text.encode("utf-8")})

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device, write_outputs
 
 if TYPE_CHECKING:
     from ..lint import Finding
@@ -44,14 +44,22 @@ def command(
     profile: str | None,
 ) -> None:
     """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
-    from ..api import save
+    from ..api import dumps, format_for
     from ..lint import LintOptions, has_errors, lint, load_selection
+    from ..lint.config import check_selectors
+    from ..names import UnknownName
 
     try:
-        selection = load_selection(Path.cwd()).merged(_codes(select), _codes(ignore))
+        selection = load_selection(Path.cwd())
     except ValueError as error:
         click.echo(f"error: configuration: {error}", err=True)
         sys.exit(EXIT_USAGE)
+    try:
+        check_selectors(_codes(select) + _codes(ignore))
+    except UnknownName as error:
+        click.echo(f"error: --select/--ignore: {error}", err=True)
+        sys.exit(EXIT_USAGE)
+    selection = selection.merged(_codes(select), _codes(ignore))
     options = LintOptions(can_fd=can_fd, node_id=node_id, profile=profile)
     findings: list[Finding] = []
     devices = []
@@ -62,7 +70,7 @@ def command(
             for finding in result:
                 if finding.fix is not None and finding.fix.safe:
                     finding.fix.apply(device)
-            save(device, name)
+            write_outputs({Path(name): dumps(device, format_for(Path(name)))})
             device = read_device(name, node_id)
             result = lint(device, options, selection)
         devices.append(device)

@@ -2,7 +2,7 @@
 #
 #   cantools_od_generate(<target> EDS <file> | XDD <file>
 #                        [NAME <name>] [TARGETS c|rust|python|markdown|canopennode ...]
-#                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD] [OD_NAME <name>])
+#                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD] [KEEP_GOING] [OD_NAME <name>])
 #
 # Adds a custom command that runs `cantools-od gen` whenever the EDS (or the pin file, or the
 # cantools-od installation) changes. For the `c` target (the default), <name>.c is added to
@@ -19,6 +19,9 @@
 #   PINS        a pin file of identifiers (`cantools-od ids`); default: <EDS stem>.ids.toml beside
 #               the EDS, whether it exists yet or not: creating, editing or deleting it regenerates.
 #   CAN_FD      allow PDOs of up to 64 bytes.
+#   KEEP_GOING  an error in the EDS that touches generated code fails the build unless this is
+#               given; with it, what the errors touch is left out (and listed in the generated
+#               files' header comments and in the build output) and the rest is generated.
 #   OD_NAME     for the `canopennode` target: the base name of CANopenNode's object dictionary
 #               files and symbols; default OD (OD.h/OD.c, which CANopen.c includes). Like `c`,
 #               the target adds <OD_NAME>.c to <target>'s sources and OUTPUT_DIR to its include
@@ -86,7 +89,7 @@ function(_cantools_od_default_name eds out)
 endfunction()
 
 function(cantools_od_generate target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD" "EDS;XDD;NAME;NODE_ID;OUTPUT_DIR;PINS;OD_NAME" "TARGETS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD;KEEP_GOING" "EDS;XDD;NAME;NODE_ID;OUTPUT_DIR;PINS;OD_NAME" "TARGETS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "cantools_od_generate: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -133,6 +136,9 @@ function(cantools_od_generate target)
   endif()
   if(arg_CAN_FD)
     list(APPEND _options --can-fd)
+  endif()
+  if(arg_KEEP_GOING)
+    list(APPEND _options --keep-going)
   endif()
   if(arg_PINS)
     get_filename_component(_pins "${arg_PINS}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")

@@ -18,9 +18,10 @@ from typing import Any
 
 from ..eds.format import IntStyle, Radix
 from ..eds.keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, Kind
+from ..names import UnknownName, check_names
 
 KEYS = ("select", "ignore", "per-file-ignores", "integer-radix")
-"""Every key `[tool.cantools-od]` may hold."""
+"""Every key `[tool.cantools-od]` may hold; any other is an error, so that a misspelt one is not ignored."""
 
 # Keys whose value is an integer `fmt` spells: the typed values and the integer keys of the CiA 306 tables.
 INTEGER_KEYS = tuple(
@@ -84,6 +85,10 @@ def _table(start: Path) -> tuple[Path | None, dict[str, Any]]:
     table = data.get("tool", {}).get("cantools-od", {})
     if not isinstance(table, dict):
         raise ValueError(f"{path}: [tool.cantools-od] must be a table")
+    try:
+        check_names("key in [tool.cantools-od]", table, KEYS)
+    except UnknownName as error:
+        raise ValueError(f"{path}: {error}") from None
     return path, table
 
 
@@ -140,4 +145,22 @@ def _codes(table: dict[str, object], key: str, path: Path) -> tuple[str, ...]:
     value = table.get(key, [])
     if not isinstance(value, list) or not all(isinstance(code, str) for code in value):
         raise ValueError(f"{path}: [tool.cantools-od] {key} must be a list of rule codes")
-    return tuple(code.strip().upper() for code in value)
+    codes = tuple(code.strip().upper() for code in value)
+    try:
+        check_selectors(codes)
+    except UnknownName as error:
+        raise ValueError(f"{path}: [tool.cantools-od] {key}: {error}") from None
+    return codes
+
+
+def check_selectors(selectors: tuple[str, ...]) -> None:
+    """Raise UnknownName for a selector that is no rule code nor the start of one (`EDS`, `PDO0`)."""
+    from . import catalog
+    from .rules import RULES
+
+    catalog.load()
+    codes = set(RULES)
+    prefixes = {code[:length] for code in codes for length in range(1, len(code))}
+    families = sorted({code[:3] for code in codes})
+    hint = f"a rule code (`cantools-od rules` lists them) or a prefix such as {', '.join(families)}"
+    check_names("rule code", selectors, codes, accepts=prefixes.__contains__, hint=hint)

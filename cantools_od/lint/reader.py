@@ -11,6 +11,17 @@ from .rules import Context, Fix, declare
 E, W = Severity.ERROR, Severity.WARNING
 
 declare(
+    "EDS000",
+    E,
+    "Not an EDS/DCF file",
+    """
+The file holds no device description: binary data (a NUL byte), nothing but blank space, text
+without a single `[section]` header, or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
+command refuses such a file with this one line and exit code 2, and never writes to it: a
+formatter that read it as an empty device would otherwise replace it with one.""",
+    "\x7fELF\x02\x01\x01\x00...",
+)
+declare(
     "EDS002",
     W,
     "Duplicate section or key",

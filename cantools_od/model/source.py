@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from enum import StrEnum
+from typing import Protocol, TypeVar
 
 from pydantic import BaseModel, ConfigDict
 
@@ -94,3 +95,38 @@ class Diagnostic(BaseModel):
 
     def format(self) -> str:
         return f"{self.location}: {self.severity.value}: {self.message} [{self.code}]"
+
+
+class Reported(Protocol):
+    """A diagnostic or a lint finding: what `capped` needs of one."""
+
+    @property
+    def code(self) -> str: ...
+
+    @property
+    def location(self) -> Location: ...
+
+
+R = TypeVar("R", bound=Reported)
+
+REPEAT_LIMIT = 10
+"""Findings of one code in one file shown before the rest are summed up in one line."""
+
+
+def capped(items: Iterable[R], limit: int = REPEAT_LIMIT) -> tuple[list[R], list[str]]:
+    """The items to show, at most `limit` per code and file, and one line for each group cut short.
+
+    A file of garbage yields thousands of findings of one kind; after the first few, a count says more."""
+    groups: dict[tuple[str, str], int] = {}
+    shown: list[R] = []
+    for item in items:
+        key = (item.location.file, item.code)
+        groups[key] = groups.get(key, 0) + 1
+        if groups[key] <= limit:
+            shown.append(item)
+    notes = [
+        f"{file or '<input>'}: note: {count - limit} more {code} finding{'s' if count - limit != 1 else ''} not shown"
+        for (file, code), count in groups.items()
+        if count > limit
+    ]
+    return shown, notes

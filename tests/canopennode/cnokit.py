@@ -17,6 +17,7 @@ from cantools_od.lint.canopennode import profile_findings
 from cantools_od.lint.runner import has_errors
 from cantools_od.model import Device
 from cantools_od.render.canopennode import render_node_view
+from cantools_od.sniff import NotADeviceDescription
 from cantools_od.views.canopennode import build_node_view
 
 from support import ROOT, cli_command
@@ -126,7 +127,11 @@ def load_accepted(paths: list[Path]) -> tuple[list[Device], dict[str, list[str]]
     """The devices the canopennode profile accepts, and for the others their error codes."""
     kept, refused = [], {}
     for path in paths:
-        device = load(str(path))
+        try:
+            device = load(str(path))
+        except NotADeviceDescription as refusal:
+            refused[path.name] = [refusal.code]
+            continue
         findings = profile_findings(device)
         if has_errors(findings):
             refused[path.name] = sorted({f.code for f in findings if f.severity.value == "error"})

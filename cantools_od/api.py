@@ -3,15 +3,16 @@
 from __future__ import annotations
 
 import os
-import tempfile
 from pathlib import Path
 from typing import Literal
 
 from pydantic import ValidationError
 
+from . import files
 from .eds.format import IntStyle
 from .eds.reader import read_bytes
 from .model import Device
+from .sniff import NotADeviceDescription, has_section, sniff, xml_refusal
 from .xdd import is_xml
 
 Format = Literal["eds", "dcf", "json", "xdd", "xdc"]
@@ -19,7 +20,10 @@ Style = Literal["preserve", "canonical"]
 
 
 def load(path: str | os.PathLike[str], node_id: int | None = None) -> Device:
-    """Read an EDS, DCF, XDD/XDC or JSON model file. Raises OSError only when the path cannot be read."""
+    """Read an EDS, DCF, XDD/XDC or JSON model file.
+
+    Raises OSError when the path cannot be read, NotADeviceDescription when its content is no
+    device description (see `loads`)."""
     data = Path(path).read_bytes()
     return loads(data, node_id=node_id, source=os.fspath(path))
 
@@ -27,30 +31,51 @@ def load(path: str | os.PathLike[str], node_id: int | None = None) -> Device:
 def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: Format | None = None) -> Device:
     """Read EDS/DCF/XDD/XDC/JSON content; the format comes from `fmt`, else the content.
 
-    EDS/DCF/XDD/XDC content never raises; JSON that is not a cantools-od model raises ValueError.
+    Raises NotADeviceDescription (a ValueError) for content that is none: binary data, an empty
+    file, text without a section, XML given as another format, JSON that is not a cantools-od
+    model. Any other content is read, with what is wrong in it as diagnostics.
     """
     raw = data.encode("utf-8") if isinstance(data, str) else data
-    if fmt in ("xdd", "xdc") or (fmt is None and is_xml(raw)):
+    # XML is read as XDD/XDC unless its name says EDS/DCF: then `fmt` would write INI over it.
+    named_ini = Path(source).suffix.lower() in (".eds", ".dcf")
+    if fmt in ("xdd", "xdc") or (fmt is None and is_xml(raw) and not named_ini):
         from .xdd.reader import read_bytes as read_xml
 
         return read_xml(raw, source, node_id=node_id, dcf=True if fmt == "xdc" else None)
-    if fmt == "json" or (fmt is None and raw.lstrip()[:1] == b"{"):
-        try:
-            device = Device.model_validate_json(raw)
-        except ValidationError as error:
-            if fmt == "json" or not _not_json(error):
-                raise  # JSON, but not a cantools-od model: a ValueError
-            return read_bytes(raw, source, node_id=node_id)  # an EDS that happens to start with "{"
-        device.source = source or device.source
-        if node_id is not None:
-            device.node_id = node_id
-        return device
+    kind = sniff(raw, source)
+    if kind == "xml":
+        raise xml_refusal(source)
+    if fmt == "json" or (fmt is None and kind == "json"):
+        return _json_model(raw, source, node_id, strict=fmt == "json")
     dcf = True if fmt == "dcf" else None
     return read_bytes(raw, source, node_id=node_id, dcf=dcf)
 
 
+def _json_model(raw: bytes, source: str, node_id: int | None, strict: bool) -> Device:
+    try:
+        device = Device.model_validate_json(raw)
+    except ValidationError as error:
+        if strict or not _not_json(error):
+            raise _not_a_model(error) from None
+        if not has_section(raw):  # "{", invalid JSON and no section: neither
+            raise _not_a_model(error) from None
+        return read_bytes(raw, source, node_id=node_id)  # an EDS that happens to start with "{"
+    device.source = source or device.source
+    if node_id is not None:
+        device.node_id = node_id
+    return device
+
+
 def _not_json(error: ValidationError) -> bool:
     return any(detail["type"] == "json_invalid" for detail in error.errors())
+
+
+def _not_a_model(error: ValidationError) -> NotADeviceDescription:
+    first = error.errors()[0]
+    where = ".".join(str(part) for part in first["loc"])
+    more = f" (and {error.error_count() - 1} more)" if error.error_count() > 1 else ""
+    reason = f"{where + ': ' if where else ''}{first['msg']}{more}"
+    return NotADeviceDescription(reason, what="a cantools-od model", code="JSN001")
 
 
 def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve", int_style: IntStyle | None = None) -> bytes:
@@ -91,41 +116,30 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve", int_st
 def save(device: Device, path: str | os.PathLike[str], fmt: Format | None = None, style: Style = "preserve") -> bool:
     """Write the device; the format comes from the file extension unless given.
 
-    The file is replaced atomically and only when its content changes.
-    Returns whether it was written.
+    The file is replaced atomically, keeping its mode, and only when its content changes.
+    Returns whether it was written; raises files.CannotWrite when it cannot be.
     """
     target = Path(path)
     chosen: Format = fmt or format_for(target)
     return write_if_changed(target, dumps(device, chosen, style))
 
 
+SUFFIXES: dict[str, Format] = {
+    ".eds": "eds",
+    ".dcf": "dcf",
+    ".json": "json",
+    ".xdd": "xdd",
+    ".xpd": "xdd",
+    ".xdc": "xdc",
+}
+"""File extensions (lower case) and the format each stands for."""
+
+
 def format_for(path: Path) -> Format:
-    suffix = path.suffix.lower()
-    if suffix == ".dcf":
-        return "dcf"
-    if suffix == ".json":
-        return "json"
-    if suffix in (".xdd", ".xpd"):
-        return "xdd"
-    if suffix == ".xdc":
-        return "xdc"
-    return "eds"
+    """The format a file's extension names; EDS for any other extension."""
+    return SUFFIXES.get(path.suffix.lower(), "eds")
 
 
 def write_if_changed(path: Path, data: bytes) -> bool:
-    """Atomically replace `path` with `data` unless it already holds exactly that."""
-    try:
-        if path.read_bytes() == data:
-            return False
-    except OSError:
-        pass
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return True
+    """Atomically replace `path` with `data` unless it already holds exactly that (see files.py)."""
+    return files.write_if_changed(path, data)

@@ -265,6 +265,8 @@ def load_pins(path: str | Path) -> dict[str, str]:
         data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as error:
         raise ValueError(f"{path}: not a TOML file: {error}") from error
+    if not data:
+        return {}  # an empty file (or only comments) pins nothing, as when `ids FILE > PINS` has just emptied it
     table = data.get("identifiers")
     if not isinstance(table, dict):
         raise ValueError(f"{path}: no [identifiers] table")

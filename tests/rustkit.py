@@ -28,7 +28,18 @@ from cantools_od.views.codegen import DeviceView, build_view
 
 from support import EXAMPLES
 
-__all__ = ["EXAMPLES", "cargo", "eds_text", "render_rust", "require", "run", "rustfmt_check", "write_crate"]
+__all__ = [
+    "EXAMPLES",
+    "Record",
+    "cargo",
+    "eds_text",
+    "render_rust",
+    "require",
+    "run",
+    "rustfmt_check",
+    "var",
+    "write_crate",
+]
 
 TIMEOUT = 600
 
@@ -90,8 +101,8 @@ def run(command: Sequence[str], cwd: Path, timeout: float = TIMEOUT) -> subproce
     return subprocess.run(list(command), cwd=cwd, capture_output=True, text=True, timeout=timeout, env=_env())
 
 
-def cargo(crate: Path, *args: str) -> subprocess.CompletedProcess[str]:
-    env = _env() | {"CARGO_TARGET_DIR": str(target_dir())}
+def cargo(crate: Path, *args: str, env: Mapping[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+    env = _env() | {"CARGO_TARGET_DIR": str(target_dir())} | dict(env or {})
     command = [find_tool("cargo") or "cargo", "--offline", *args]
     return subprocess.run(command, cwd=crate, capture_output=True, text=True, timeout=TIMEOUT, env=env)
 

@@ -14,6 +14,8 @@ from hypothesis import strategies as st
 from cantools_od.identifiers import RESERVED, Identifiers, assign, is_identifier, load_pins, snake_case
 from cantools_od.model import Device, Object, ObjectKind, SubObject
 
+from support import corpus_devices
+
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "eds-corpus" / "eds"
 EXAMPLE = Path(__file__).resolve().parents[1] / "eds" / "cia402_drive.eds"
 SHAPE = re.compile(r"^[a-z][a-z0-9_]*$")
@@ -394,13 +396,7 @@ def test_is_identifier() -> None:
 # --- whole files --------------------------------------------------------------------------------------------------
 
 
-def corpus_files() -> list[Path]:
-    if not CORPUS.is_dir():
-        return []
-    return sorted(path for path in CORPUS.iterdir() if path.suffix.lower() in (".eds", ".dcf"))
-
-
-@pytest.mark.parametrize("path", corpus_files() or [None], ids=lambda p: p.name if p else "no-corpus")
+@pytest.mark.parametrize("path", corpus_devices() or [None], ids=lambda p: p.name if p else "no-corpus")
 def test_corpus_identifiers_are_unique(path: Path | None) -> None:
     if path is None:
         pytest.skip(f"no corpus at {CORPUS}")

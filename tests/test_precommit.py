@@ -97,3 +97,48 @@ def test_lint_hook_checks_xdd_files_at_their_xml_line(workspace: tuple[Path, dic
     result = try_repo(workspace, "cantools-od-lint", "bad.xdd")
     assert result.returncode == 1, result.stdout + result.stderr
     assert "bad.xdd:4:107: error:" in result.stdout and "[EDS030]" in result.stdout
+
+
+def readme_snippet() -> str:
+    """The .pre-commit-config.yaml the README tells users to write."""
+    text = (ROOT / "README.md").read_text("utf-8")
+    section = text[text.index("### pre-commit") :]
+    start = section.index("```yaml\n") + len("```yaml\n")
+    return section[start : section.index("```", start)]
+
+
+def test_readme_snippet_in_a_fresh_repository(tmp_path: Path) -> None:
+    """The README's snippet as written (only the URL is the user's to fill in), against this commit
+    published as `main`; then `pre-commit autoupdate --freeze` pins it to a commit that exists."""
+    tool = pre_commit()
+    published = tmp_path / "published.git"
+    subprocess.run(["git", "init", "-q", "--bare", str(published)], check=True)
+    subprocess.run(["git", "push", "-q", str(published), "HEAD:refs/heads/main"], cwd=ROOT, check=True)
+    subprocess.run(["git", "--git-dir", str(published), "symbolic-ref", "HEAD", "refs/heads/main"], check=True)
+    repo = tmp_path / "user-repo"
+    repo.mkdir()
+    git(repo, "init", "-q")
+    snippet = readme_snippet()
+    url = next(line.split()[2] for line in snippet.splitlines() if line.strip().startswith("- repo:"))
+    (repo / ".pre-commit-config.yaml").write_text(snippet.replace(url, str(published)), encoding="utf-8")
+    shutil.copy(EXAMPLES / "io_device.eds", repo / "good.eds")
+    (repo / "bad.eds").write_text(BAD)
+    git(repo, "add", ".")
+    env = dict(os.environ, PRE_COMMIT_HOME=str(tmp_path / "home"), PRE_COMMIT_COLOR="never")
+
+    def run(*args: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([tool, *args], cwd=repo, env=env, capture_output=True, text=True, timeout=900)
+
+    first = run("run", "--all-files")
+    assert first.returncode == 1, first.stdout + first.stderr  # bad.eds fails the lint hook
+    assert "bad.eds:11:14: error:" in first.stdout and "[EDS030]" in first.stdout
+    frozen = run("autoupdate", "--freeze")
+    assert frozen.returncode == 0, frozen.stdout + frozen.stderr
+    config = (repo / ".pre-commit-config.yaml").read_text("utf-8")
+    head = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True, check=True)
+    assert f"rev: {head.stdout.strip()}" in config, config
+    (repo / "bad.eds").unlink()
+    git(repo, "add", "-A")
+    second = run("run", "--all-files")
+    lint_line = next(line for line in second.stdout.splitlines() if line.startswith("cantools-od lint"))
+    assert lint_line.endswith("Passed"), second.stdout

@@ -9,6 +9,7 @@ import pytest
 
 from cantools_od import load, loads
 from cantools_od.model import AccessType, Dialect, NodeIdExpr, ObjectKind, RawValue, Severity, TimeValue
+from cantools_od.sniff import NotADeviceDescription
 
 
 def codes(device: object) -> list[str]:
@@ -35,7 +36,7 @@ def test_line_ends(eol: bytes) -> None:
     device = loads(VAR.format(value="7").encode().replace(b"\n", eol))
     assert device.objects[0x2000].default == 7
     assert device.objects[0x2000].origin is not None
-    assert device.objects[0x2000].origin.keys["DefaultValue"][0] == 5
+    assert device.objects[0x2000].origin.value("DefaultValue").line == 5
 
 
 def test_mixed_line_ends_and_bom() -> None:
@@ -242,7 +243,7 @@ def test_origin_of_every_key() -> None:
     device = loads(b"[2000]\n; a comment\nParameterName = Speed\nDataType=0x0006\n", source="f.eds")
     origin = device.objects[0x2000].origin
     assert origin is not None and (origin.file, origin.line) == ("f.eds", 1)
-    assert origin.keys["ParameterName"] == (3, 1, 17)
+    assert origin.where("ParameterName") == (3, 1, 17)
     assert device.objects[0x2000].comments == {"ParameterName": ["; a comment"]}
 
 
@@ -251,9 +252,20 @@ def test_unreadable_path_raises_oserror(tmp_path: Path) -> None:
         load(tmp_path / "missing.eds")
 
 
-@pytest.mark.parametrize("data", [b"", b"\x00\xff\xfe", b"[", b"=", b"[]\n=\n", b"[1000sub]\n", b"[FFFFsubFFF]\n"])
+@pytest.mark.parametrize("data", [b"[", b"[]\n=\n", b"[1000sub]\n", b"[FFFFsubFFF]\n", b"x\n[2000"])
 def test_garbage_never_raises(data: bytes) -> None:
     loads(data)
+
+
+@pytest.mark.parametrize("data", [b"", b" \r\n", b"\x00\xff\xfe", b"=", b"ParameterName=x\n"])
+def test_what_is_no_device_description_is_refused(data: bytes) -> None:
+    with pytest.raises(NotADeviceDescription, match=r"^not an EDS/DCF file: "):
+        loads(data)
+
+
+def test_xml_given_as_an_eds_is_refused() -> None:
+    with pytest.raises(NotADeviceDescription, match=r"^not an EDS/DCF file: XML"):
+        loads(b"<?xml version='1.0'?><a/>", fmt="eds")
 
 
 def test_orphan_sub_object_section_is_kept_and_reported() -> None:

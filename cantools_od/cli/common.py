@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
 from ..model import Device, Diagnostic, Severity
+from ..model.source import capped
 
 if TYPE_CHECKING:
     from ..identifiers import Identifiers
@@ -19,28 +21,62 @@ EXIT_USAGE = 2
 
 
 def read_device(path: str, node_id: int | None = None) -> Device:
-    """Load a file; an unreadable path exits with code 2 and a message."""
+    """Load a file; a path that cannot be read, or content that is no device description,
+    exits with code 2 and one line saying why."""
     from ..api import load
+    from ..sniff import NotADeviceDescription
 
     try:
         return load(path, node_id=node_id)
     except OSError as error:
         click.echo(f"{path}: error: cannot read: {error.strerror or error}", err=True)
+    except NotADeviceDescription as error:
+        click.echo(f"{path}: error: {error} [{error.code}]", err=True)
+    sys.exit(EXIT_USAGE)
+
+
+def check_extension(path: str, role: str) -> None:
+    """A file whose format its extension decides must have a known one; else exit 2 with the closest."""
+    from ..api import SUFFIXES
+    from ..names import UnknownName, check_names
+
+    try:
+        check_names("file extension", [Path(path).suffix.lower()], SUFFIXES)
+    except UnknownName as error:
+        click.echo(f"{path}: error: {role}: {error}", err=True)
         sys.exit(EXIT_USAGE)
-    except ValueError as error:  # JSON that is not a model
-        click.echo(f"{path}:1:1: error: not a cantools-od model: {error} [JSN001]", err=True)
+
+
+def write_outputs(outputs: Mapping[Path, bytes]) -> list[Path]:
+    """Write every output or none (see files.py); a failure exits with code 2 and one line."""
+    from ..files import CannotWrite, write_all
+
+    try:
+        return write_all(outputs.items())
+    except CannotWrite as error:
+        click.echo(f"error: {error}", err=True)
         sys.exit(EXIT_USAGE)
+
+
+def errors_to_fix(device: Device) -> str | None:
+    """`N errors to fix first` when reading found errors: a command that would carry the content
+    on (fmt, convert, ids) then does nothing rather than lose or spread what it could not read."""
+    count = sum(d.severity is Severity.ERROR for d in device.diagnostics)
+    return f"{count} error{'s' if count != 1 else ''} to fix first" if count else None
 
 
 def report(diagnostics: Iterable[Diagnostic], minimum: Severity = Severity.WARNING) -> bool:
-    """Print diagnostics at or above `minimum` to stderr; True when one is an error."""
+    """Print diagnostics at or above `minimum` to stderr, a few of each code per file and a
+    count of the rest; True when one is an error."""
+    diagnostics = list(diagnostics)
     order = [Severity.ERROR, Severity.WARNING, Severity.INFO]
-    errors = False
-    for diagnostic in diagnostics:
-        if order.index(diagnostic.severity) <= order.index(minimum):
-            click.echo(diagnostic.format(), err=True)
-        errors = errors or diagnostic.severity is Severity.ERROR
-    return errors
+    chosen = [d for d in diagnostics if order.index(d.severity) <= order.index(minimum)]
+    shown, notes = capped(chosen)
+    for diagnostic in shown:
+        click.echo(diagnostic.format(), err=True)
+    for note in notes:
+        click.echo(note, err=True)
+    return any(d.severity is Severity.ERROR for d in diagnostics)
 
 
 def node_id_option(function: click.decorators.FC) -> click.decorators.FC:

@@ -7,7 +7,17 @@ from pathlib import Path
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, node_id_option, read_device, report
+from .common import (
+    EXIT_FINDINGS,
+    EXIT_OK,
+    EXIT_USAGE,
+    check_extension,
+    errors_to_fix,
+    node_id_option,
+    read_device,
+    report,
+    write_outputs,
+)
 
 
 @click.command(name="convert")
@@ -22,16 +32,23 @@ from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, node_id_option, read_dev
 @node_id_option
 def command(source: str, output: str, node_id: int | None) -> None:
     """Convert SOURCE to OUTPUT. The same format in and out keeps the original
-    layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id."""
-    from ..api import dumps, format_for, write_if_changed
+    layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id. A SOURCE
+    with errors is not converted (exit 1)."""
+    from ..api import dumps, format_for
 
+    check_extension(source, "input")
+    check_extension(output, "output")
     device = read_device(source, node_id)
-    errors = report(device.diagnostics)
+    report(device.diagnostics)
+    problems = errors_to_fix(device)
+    if problems:
+        click.echo(f"{source}: error: not converted: {problems}", err=True)
+        sys.exit(EXIT_FINDINGS)
     fmt_in, fmt_out = format_for(Path(source)), format_for(Path(output))
     try:
         data = dumps(device, fmt_out, style="preserve" if fmt_in == fmt_out else "canonical")
     except ValueError as error:
         click.echo(f"{source}: error: {error}", err=True)
         sys.exit(EXIT_USAGE)
-    write_if_changed(Path(output), data)
-    sys.exit(EXIT_FINDINGS if errors else EXIT_OK)
+    write_outputs({Path(output): data})
+    sys.exit(EXIT_OK)

@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from ..model import Severity
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device, report
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, read_device, report, write_outputs
 
 RADIXES = ("canonical", "as-written", "hex", "decimal")
 
@@ -27,8 +27,8 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | N
     """Rewrite FILES in canonical form (CiA 306 key order and spelling, sorted
     sections, integers by the radix style, LF line ends), spelled so that every
     peer reader reads what the original said. A file is written only when its
-    content changes."""
-    from ..api import dumps, format_for, write_if_changed
+    content changes, and never when it has errors (exit 1)."""
+    from ..api import dumps, format_for
     from ..lint.config import load_int_style
 
     try:
@@ -37,10 +37,17 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | N
         click.echo(f"error: configuration: {error}", err=True)
         sys.exit(EXIT_USAGE)
 
-    changed = 0
+    changed = refused = 0
     for name in files:
         device = read_device(name)
         report(device.diagnostics, minimum=Severity.ERROR)
+        problems = errors_to_fix(device)
+        if problems:
+            # The canonical form of a file the reader could not fully make sense of could drop
+            # what it did not understand: such a file is left as it is.
+            click.echo(f"{name}: error: not formatted: {problems}", err=True)
+            refused += 1
+            continue
         path = Path(name)
         original = path.read_bytes()
         formatted = dumps(device, format_for(path), style="canonical", int_style=int_style)
@@ -59,6 +66,6 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | N
         if check or show_diff:
             click.echo(f"would reformat {name}", err=True)
         else:
-            write_if_changed(path, formatted)
+            write_outputs({path: formatted})
             click.echo(f"reformatted {name}", err=True)
-    sys.exit(EXIT_FINDINGS if changed and (check or show_diff) else EXIT_OK)
+    sys.exit(EXIT_FINDINGS if refused or (changed and (check or show_diff)) else EXIT_OK)

@@ -1,13 +1,31 @@
-"""`cantools-od gen`: C, Rust, Python and Markdown from one object dictionary."""
+"""`cantools-od gen`: C, Rust, Python, Markdown and CANopenNode OD.h/OD.c from one object dictionary."""
 
 from __future__ import annotations
 
+import re
 import sys
+from dataclasses import replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, identifiers_for, node_id_option, pins_option, read_device, report
+from ..model import Device, Severity
+from .common import (
+    EXIT_FINDINGS,
+    EXIT_OK,
+    check_extension,
+    identifiers_for,
+    node_id_option,
+    pins_option,
+    read_device,
+    report,
+    write_outputs,
+)
+
+if TYPE_CHECKING:
+    from ..identifiers import Identifiers
+    from ..views.codegen import DeviceView
 
 
 def default_name(file: str) -> str:
@@ -20,12 +38,17 @@ def default_name(file: str) -> str:
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option(
     "-t", "--target", "targets", multiple=True, required=True,
-    type=click.Choice(["c", "rust", "python", "markdown"]), help="What to generate; repeat for several.",
+    type=click.Choice(["c", "rust", "python", "markdown", "canopennode"]), help="What to generate; repeat for several.",
 )  # fmt: skip
 @click.option("-o", "--output", "outdir", required=True, type=click.Path(file_okay=False), help="Output folder.")
 @click.option("--name", help="Base name of the generated files and symbols (default: FILE's stem).")
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--depfile", type=click.Path(dir_okay=False), help="Write a Makefile-style depfile for build systems.")
+@click.option("--explain", is_flag=True, help="List every CANopenNode setting that was inferred (-t canopennode).")
+@click.option(
+    "--keep-going", is_flag=True,
+    help="Generate what errors in FILE do not touch, list what is left out, and exit 0.",
+)  # fmt: skip
 @node_id_option
 @pins_option
 def command(
@@ -35,43 +58,77 @@ def command(
     name: str | None,
     can_fd: bool,
     depfile: str | None,
+    explain: bool,
+    keep_going: bool,
     node_id: int | None,
     pin_file: str | None,
 ) -> None:
     """Generate code and documents for FILE into OUTDIR. Files are rewritten only when
-    their content changes; nothing is written when FILE cannot be generated from
-    (exit 1, with the reasons as diagnostics)."""
-    from ..api import write_if_changed
+    their content changes, and all of them or none.
+
+    An error in FILE that touches what is generated (an invalid value, a broken section, a
+    PDO that cannot be packed) fails the command with exit 1 and writes nothing; with
+    --keep-going the rest is generated and what was left out is listed, in the files'
+    header comments and on stderr."""
     from ..identifiers import is_identifier, pin_file_for
-    from ..model import Severity
     from ..model.cia301.pdo import frame_bits
     from ..render import renderer
-    from ..views.codegen import build_view
+    from ..render.notes import with_left_out
+    from .canopennode import prepare_canopennode
 
     base = name or default_name(file)
-    if not is_identifier(base):
+    stack_only = set(targets) == {"canopennode"}  # the stack's own names: OD, OD1 (any C identifier)
+    if name and {"c", "canopennode"} <= set(targets):
+        raise click.BadParameter("-t c and -t canopennode would both write NAME.h/NAME.c; run them apart",
+                                 param_hint="--name")  # fmt: skip
+    if not (is_identifier(base) or (stack_only and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", base))):
         raise click.BadParameter(f"{base!r} is not a valid identifier", param_hint="--name")
+    check_extension(file, "input")
     device = read_device(file, node_id)
     identifiers = identifiers_for(device, file, pin_file)
-    view = build_view(device, base, node_id, identifiers, max_pdo_bits=frame_bits(can_fd))
-    # Read errors are shown; they fail the command only when they make generation impossible.
+    extra_inputs = prepare_canopennode(device, file, explain) if "canopennode" in targets else []
     report(device.diagnostics, minimum=Severity.ERROR)
-    if view.problems:
-        report(view.problems)
-        click.echo(f"{file}: error: nothing generated", err=True)
-        sys.exit(EXIT_FINDINGS)
-    outputs: dict[Path, str] = {}
+    # PDO code needs the PDOs to be packable; the stack checks PDOs itself.
+    view, left_out = _view(device, base, node_id, identifiers, frame_bits(can_fd), not stack_only)
+    if left_out:
+        shown = "; ".join(left_out[:10]) + (f"; and {len(left_out) - 10} more" if len(left_out) > 10 else "")
+        if not keep_going:
+            why = f"{file}: error: nothing generated: errors touch {shown}"
+            click.echo(f"{why} (--keep-going generates the rest)", err=True)
+            sys.exit(EXIT_FINDINGS)
+        click.echo(f"{file}: warning: left out of the generated files: {shown}", err=True)
+    outputs: dict[Path, bytes] = {}
     for target in dict.fromkeys(targets):
-        for filename, text in renderer(target)(view).items():
-            outputs[Path(outdir) / filename] = text
-    for path, text in outputs.items():  # everything rendered before anything is written
-        write_if_changed(path, text.encode("utf-8"))
+        # CANopenNode's files are OD.h/OD.c unless named: the stack includes "OD.h".
+        target_view = replace(view, name=name or "OD") if target == "canopennode" else view
+        for filename, text in renderer(target)(target_view).items():
+            outputs[Path(outdir) / filename] = with_left_out(filename, text, left_out).encode("utf-8")
     if depfile:
         pins = pin_file_for(file, pin_file)
-        inputs = [file, *([str(pins)] if pins else [])]
+        inputs = [file, *([str(pins)] if pins else []), *extra_inputs]
         rule = " ".join(_escape(str(p)) for p in outputs) + ": " + " ".join(_escape(i) for i in inputs) + "\n"
-        write_if_changed(Path(depfile), rule.encode("utf-8"))
+        outputs[Path(depfile)] = rule.encode("utf-8")
+    write_outputs(outputs)  # everything rendered before anything is written, and all of it or nothing
     sys.exit(EXIT_OK)
+
+
+def _view(
+    device: Device, base: str, node_id: int | None, identifiers: Identifiers, max_pdo_bits: int, pdo_code: bool
+) -> tuple[DeviceView, list[str]]:
+    """The view to render, and what errors made it leave out (objects, then PDOs)."""
+    from ..eds.where import damaged_objects
+    from ..views.codegen import build_view
+    from ..views.partial import left_out_objects, without, without_failed_pdos
+
+    damaged = set(damaged_objects(device))
+    # Identifiers come from the whole device, so that leaving an object out renames nothing else.
+    view = build_view(without(device, damaged), base, node_id, identifiers, max_pdo_bits=max_pdo_bits)
+    left_out = left_out_objects(device, damaged)
+    if view.problems and pdo_code:
+        report(view.problems)
+        view, pdos = without_failed_pdos(view)
+        left_out += pdos
+    return view, left_out
 
 
 def _escape(path: str) -> str:

@@ -8,7 +8,7 @@ from typing import Literal
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, write_outputs
 
 LAYOUT_CHOICES = ["auto", "text", "cells", "csv", "tsv", "xlsx", "markdown"]
 
@@ -48,7 +48,7 @@ def command(
     Exit status: 0 written; 1 written, but with --strict a conflict was left to the policy or
     an entry lacks a data type or access the sources never state; 2 a source or the overrides
     file could not be read, or no object was found."""
-    from ..api import dumps, write_if_changed
+    from ..api import dumps
     from ..model import Severity
     from ..tableimport import UnreadableInput, import_tables
     from ..tableimport.merge import POLICIES
@@ -74,13 +74,10 @@ def command(
         click.echo(f"{output}: error: no object found in the sources; nothing written [IMP002]", err=True)
         sys.exit(EXIT_USAGE)
     fmt: Literal["json", "eds"] = "json" if Path(output).suffix.lower() == ".json" else "eds"
-    try:
-        write_if_changed(Path(output), dumps(result.device, fmt, "canonical"))
-        if report_file:
-            write_if_changed(Path(report_file), result.report().encode("utf-8"))
-    except OSError as error:
-        click.echo(f"{error.filename or output}: error: cannot write: {error.strerror or error}", err=True)
-        sys.exit(EXIT_USAGE)
+    outputs = {Path(output): dumps(result.device, fmt, "canonical")}
+    if report_file:
+        outputs[Path(report_file)] = result.report().encode("utf-8")
+    write_outputs(outputs)
     merged = result.merged
     policy_resolved = [c for c in merged.conflicts if c.resolution.startswith("policy") and c.field != "name"]
     if not quiet:

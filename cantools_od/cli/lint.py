@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device, write_outputs
 
 if TYPE_CHECKING:
     from ..lint import Finding
@@ -29,6 +29,9 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")
 @click.option("--network", is_flag=True, help="Also check the files together as one network (DCFs).")
+@click.option(
+    "--profile", type=click.Choice(["canopennode"]), help="Also apply a target's rules (canopennode: the CNO codes)."
+)
 def command(
     files: tuple[str, ...],
     fmt: str,
@@ -38,17 +41,26 @@ def command(
     can_fd: bool,
     node_id: int | None,
     network: bool,
+    profile: str | None,
 ) -> None:
     """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
-    from ..api import save
+    from ..api import dumps, format_for
     from ..lint import LintOptions, has_errors, lint, load_selection
+    from ..lint.config import check_selectors
+    from ..names import UnknownName
 
     try:
-        selection = load_selection(Path.cwd()).merged(_codes(select), _codes(ignore))
+        selection = load_selection(Path.cwd())
     except ValueError as error:
         click.echo(f"error: configuration: {error}", err=True)
         sys.exit(EXIT_USAGE)
-    options = LintOptions(can_fd=can_fd, node_id=node_id)
+    try:
+        check_selectors(_codes(select) + _codes(ignore))
+    except UnknownName as error:
+        click.echo(f"error: --select/--ignore: {error}", err=True)
+        sys.exit(EXIT_USAGE)
+    selection = selection.merged(_codes(select), _codes(ignore))
+    options = LintOptions(can_fd=can_fd, node_id=node_id, profile=profile)
     findings: list[Finding] = []
     devices = []
     for name in files:
@@ -58,7 +70,7 @@ def command(
             for finding in result:
                 if finding.fix is not None and finding.fix.safe:
                     finding.fix.apply(device)
-            save(device, name)
+            write_outputs({Path(name): dumps(device, format_for(Path(name)))})
             device = read_device(name, node_id)
             result = lint(device, options, selection)
         devices.append(device)

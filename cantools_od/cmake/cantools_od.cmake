@@ -1,8 +1,8 @@
 # CMake integration of cantools-od: generate code from a CANopen EDS/DCF or XDD/XDC at build time.
 #
 #   cantools_od_generate(<target> EDS <file> | XDD <file>
-#                        [NAME <name>] [TARGETS c|rust|python|markdown ...]
-#                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD])
+#                        [NAME <name>] [TARGETS c|rust|python|markdown|canopennode ...]
+#                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD] [KEEP_GOING] [OD_NAME <name>])
 #
 # Adds a custom command that runs `cantools-od gen` whenever the EDS (or the pin file, or the
 # cantools-od installation) changes. For the `c` target (the default), <name>.c is added to
@@ -17,8 +17,15 @@
 #   NODE_ID     the node-ID that $NODEID stands for (1-127).
 #   OUTPUT_DIR  default: ${CMAKE_CURRENT_BINARY_DIR}/cantools_od
 #   PINS        a pin file of identifiers (`cantools-od ids`); default: <EDS stem>.ids.toml beside
-#               the EDS when it exists.
+#               the EDS, whether it exists yet or not: creating, editing or deleting it regenerates.
 #   CAN_FD      allow PDOs of up to 64 bytes.
+#   KEEP_GOING  an error in the EDS that touches generated code fails the build unless this is
+#               given; with it, what the errors touch is left out (and listed in the generated
+#               files' header comments and in the build output) and the rest is generated.
+#   OD_NAME     for the `canopennode` target: the base name of CANopenNode's object dictionary
+#               files and symbols; default OD (OD.h/OD.c, which CANopen.c includes). Like `c`,
+#               the target adds <OD_NAME>.c to <target>'s sources and OUTPUT_DIR to its include
+#               directories; a <EDS stem>.canopennode.toml beside the EDS is tracked by the depfile.
 #
 # Call it in the directory that defines <target> (CMake attaches custom commands to targets of the
 # same directory). Which cantools-od runs:
@@ -26,9 +33,6 @@
 #                           "/usr/bin/python3;-m;cantools_od"; wins when set.
 #   CANTOOLS_OD_EXECUTABLE  (cache) the `cantools-od` console script; searched for next to the
 #                           Python installation this module belongs to first, then on the PATH.
-#
-# With CMake 3.20 or newer (3.7 with Ninja), the generator also writes a depfile, so that a pin file
-# that appears beside the EDS later is tracked as well.
 
 include_guard(GLOBAL)
 
@@ -85,7 +89,7 @@ function(_cantools_od_default_name eds out)
 endfunction()
 
 function(cantools_od_generate target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD" "EDS;XDD;NAME;NODE_ID;OUTPUT_DIR;PINS" "TARGETS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "CAN_FD;KEEP_GOING" "EDS;XDD;NAME;NODE_ID;OUTPUT_DIR;PINS;OD_NAME" "TARGETS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "cantools_od_generate: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -111,8 +115,9 @@ function(cantools_od_generate target)
     set(arg_TARGETS c)
   endif()
   foreach(_kind IN LISTS arg_TARGETS)
-    if(NOT _kind MATCHES "^(c|rust|python|markdown)$")
-      message(FATAL_ERROR "cantools_od_generate(${target}): unknown target '${_kind}' (c, rust, python, markdown)")
+    if(NOT _kind MATCHES "^(c|rust|python|markdown|canopennode)$")
+      message(FATAL_ERROR
+              "cantools_od_generate(${target}): unknown target '${_kind}' (c, rust, python, markdown, canopennode)")
     endif()
   endforeach()
   if(arg_OUTPUT_DIR)
@@ -124,7 +129,7 @@ function(cantools_od_generate target)
   file(MAKE_DIRECTORY "${_out}" "${_work}")
 
   _cantools_od_command(_command)
-  set(_options --name "${_name}" -o "${_out}")
+  set(_options -o "${_out}")
   set(_depends "${_eds}")
   if(arg_NODE_ID)
     list(APPEND _options --node-id "${arg_NODE_ID}")
@@ -132,10 +137,32 @@ function(cantools_od_generate target)
   if(arg_CAN_FD)
     list(APPEND _options --can-fd)
   endif()
+  if(arg_KEEP_GOING)
+    list(APPEND _options --keep-going)
+  endif()
   if(arg_PINS)
     get_filename_component(_pins "${arg_PINS}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
     list(APPEND _options --pins "${_pins}")
     list(APPEND _depends "${_pins}")
+  endif()
+  get_filename_component(_eds_name "${_eds}" NAME)
+  if(NOT arg_PINS)
+    # The default pin file may not exist yet, and a build step cannot depend on a missing file: a
+    # target run on every build keeps a copy of it in the build folder (empty while there is none),
+    # rewritten only when that changes, and generation depends on the copy.
+    string(REGEX REPLACE "\\.[^./]*$" "" _eds_base "${_eds}")
+    set(_pins_copy "${_work}/pins.ids.toml")
+    add_custom_target("${target}_cantools_od_${_name}_pins" ALL
+      COMMAND "${CMAKE_COMMAND}" "-DPINS=${_eds_base}.ids.toml" "-DCOPY=${_pins_copy}"
+              -P "${_cantools_od_module_dir}/cantools_od_pins.cmake"
+      BYPRODUCTS "${_pins_copy}"
+      COMMENT "Checking ${_eds_name}'s pin file"
+      VERBATIM)
+    get_target_property(_target_type "${target}" TYPE)
+    if(NOT _target_type STREQUAL "INTERFACE_LIBRARY" OR NOT CMAKE_VERSION VERSION_LESS 3.19)
+      add_dependencies("${target}" "${target}_cantools_od_${_name}_pins") # also when building only it
+    endif()
+    list(APPEND _depends "${_pins_copy}")
   endif()
   list(GET _command 0 _program)
   if(IS_ABSOLUTE "${_program}" AND EXISTS "${_program}" AND NOT CANTOOLS_OD_COMMAND)
@@ -149,17 +176,10 @@ function(cantools_od_generate target)
     set(_scope PUBLIC)
     set(_sources_scope PRIVATE)
   endif()
-  get_filename_component(_eds_name "${_eds}" NAME)
-
   set(_others "${arg_TARGETS}")
-  list(REMOVE_ITEM _others c)
+  list(REMOVE_ITEM _others c canopennode)
   if("c" IN_LIST arg_TARGETS)
     set(_outputs "${_out}/${_name}.h" "${_out}/${_name}.c")
-    set(_depfile "${_work}/c.d")
-    set(_depfile_args)
-    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.20 OR CMAKE_GENERATOR MATCHES "Ninja")
-      set(_depfile_args DEPFILE "${_depfile}")
-    endif()
     # gen rewrites a file only when its content changes. Ninja (restat) then skips what depends on an
     # unchanged file; other build tools would run the generator again and again while the EDS is newer
     # than the outputs, so they get fresh timestamps there.
@@ -169,14 +189,17 @@ function(cantools_od_generate target)
     endif()
     add_custom_command(
       OUTPUT ${_outputs}
-      COMMAND ${_command} gen "${_eds}" -t c ${_options} --depfile "${_depfile}"
+      COMMAND ${_command} gen "${_eds}" -t c --name "${_name}" ${_options}
       ${_touch}
       DEPENDS ${_depends}
-      ${_depfile_args}
       COMMENT "Generating ${_name}.h and ${_name}.c from ${_eds_name}"
       VERBATIM)
     target_sources("${target}" ${_sources_scope} ${_outputs})
     target_include_directories("${target}" ${_scope} "${_out}")
+  endif()
+  if("canopennode" IN_LIST arg_TARGETS)
+    _cantools_od_canopennode("${target}" "${_eds}" "${_out}" "${_work}" "${arg_OD_NAME}" "${_command}"
+                             "${_options}" "${_depends}" "${_scope}" "${_sources_scope}")
   endif()
   if(_others)
     # The file names of these targets are not known here: a stamp file stands for them.
@@ -187,13 +210,41 @@ function(cantools_od_generate target)
     endforeach()
     add_custom_command(
       OUTPUT "${_stamp}"
-      COMMAND ${_command} gen "${_eds}" ${_target_options} ${_options}
+      COMMAND ${_command} gen "${_eds}" ${_target_options} --name "${_name}" ${_options}
       COMMAND "${CMAKE_COMMAND}" -E touch "${_stamp}"
       DEPENDS ${_depends}
       COMMENT "Generating ${_others} for ${_name} from ${_eds_name}"
       VERBATIM)
     target_sources("${target}" ${_sources_scope} "${_stamp}")
   endif()
+endfunction()
+
+# The canopennode target: CANopenNode v4's <OD_NAME>.h/.c, compiled into <target>.
+function(_cantools_od_canopennode target eds out work od_name command options depends scope sources_scope)
+  if(NOT od_name)
+    set(od_name OD)
+  endif()
+  get_filename_component(_eds_name "${eds}" NAME)
+  set(_outputs "${out}/${od_name}.h" "${out}/${od_name}.c")
+  set(_depfile "${work}/canopennode.d")
+  set(_depfile_args)
+  if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.20 OR CMAKE_GENERATOR MATCHES "Ninja")
+    set(_depfile_args DEPFILE "${_depfile}")
+  endif()
+  set(_touch) # as for `c`: fresh timestamps where the build tool does not restat
+  if(NOT CMAKE_GENERATOR MATCHES "Ninja")
+    set(_touch COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${_outputs})
+  endif()
+  add_custom_command(
+    OUTPUT ${_outputs}
+    COMMAND ${command} gen "${eds}" -t canopennode --name "${od_name}" ${options} --depfile "${_depfile}"
+    ${_touch}
+    DEPENDS ${depends}
+    ${_depfile_args}
+    COMMENT "Generating ${od_name}.h and ${od_name}.c (CANopenNode) from ${_eds_name}"
+    VERBATIM)
+  target_sources("${target}" ${sources_scope} ${_outputs})
+  target_include_directories("${target}" BEFORE ${scope} "${out}")
 endfunction()
 
 cmake_policy(POP)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..model import AccessType, Device, NodeIdExpr, Object, ObjectKind, SubObject
+from ..model import AccessType, Device, NodeIdExpr, Object, ObjectKind, Origin, SubObject
 from ..model.cia301.cobid import VALID
 from ..model.cia301.pdo import (
     COMM_BASE,
@@ -88,7 +88,7 @@ def apply_compact_sections(device: Device, sections: list[tuple[int, str, ini.In
             continue
         count = collected.fields.get("count")
         if count != len(keys):
-            line, column, _ = collected.origin.keys.get("NrOfEntries", (section.line, 1, 1))
+            line, column, _ = collected.origin.where("NrOfEntries") or (section.line, 1, 1)
             report.error("EDS104", f"[{section.name}]: NrOfEntries={count} but {len(keys)} entries", line, column)
         by_key = {e.key: e for e in section.entries}
         for key in keys:
@@ -100,12 +100,24 @@ def apply_compact_sections(device: Device, sections: list[tuple[int, str, ini.In
                 )
                 sub = obj.subs[subindex] = implicit_sub(obj, subindex)
                 obj.subs = dict(sorted(obj.subs.items()))
+            _locate(sub, section, kind, by_key[key], report.file)
             if kind == "name":
                 sub.name = collected.extra[key]
             elif kind == "denotation":
                 sub.denotation = collected.extra[key]
             else:
                 type_entry(device, sub, obj, "parameter_value", by_key[key], report)
+
+
+_COMPACT_KEYS = {"name": "ParameterName", "value": "ParameterValue", "denotation": "Denotation"}
+
+
+def _locate(sub: SubObject, section: ini.IniSection, kind: str, entry: ini.Entry, file: str) -> None:
+    """An implicit sub-object's value is written in [xxxxName/Value/Denotation]: findings about it go there."""
+    if sub.origin is None:
+        sub.origin = Origin(file=file, line=section.line, column=section.column)
+    # a new dict: origins built by the reader may share one empty dict
+    sub.origin.keys = {**sub.origin.keys, _COMPACT_KEYS[kind]: (entry.line, entry.key_col, entry.value_col)}
 
 
 def _object_links(device: Device, obj: Object, section: ini.IniSection, report: Report) -> None:
@@ -122,7 +134,7 @@ def _object_links(device: Device, obj: Object, section: ini.IniSection, report: 
             return
         links.append(target)
     if collected.fields.get("count") != len(links):
-        line, column, _ = collected.origin.keys.get("ObjectLinks", (section.line, 1, 1))
+        line, column, _ = collected.origin.where("ObjectLinks") or (section.line, 1, 1)
         message = f"[{section.name}]: ObjectLinks={collected.fields.get('count')} but {len(links)} entries"
         report.error("EDS104", message, line, column)
     obj.links = links

@@ -8,6 +8,8 @@ the file holds, and encodes back to itself.
 from __future__ import annotations
 
 import codecs
+import re
+from collections.abc import Iterator
 
 _BOM = b"\xef\xbb\xbf"
 CP1252 = "cp1252"
@@ -50,3 +52,22 @@ def decode(data: bytes) -> tuple[str, str | None]:
 def encode(text: str, encoding: str) -> bytes:
     """Text in the codec it was read with; raises UnicodeEncodeError for characters it cannot hold."""
     return text.encode(encoding, ERRORS if encoding == CP1252 else "strict")
+
+
+_SECTION_START = re.compile(rb"[\r\n][ \t]*\[")
+CHUNK = 1 << 20
+
+
+def utf8_pieces(data: bytes) -> Iterator[str]:
+    """`data` as UTF-8 text (without a BOM) in pieces of about CHUNK bytes, each but the first
+    starting at a section header, so that a large file is never all text at once. Raises
+    UnicodeDecodeError, with offsets into `data`, when it is not UTF-8."""
+    start = len(_BOM) if data.startswith(_BOM) else 0
+    while start < len(data):
+        match = _SECTION_START.search(data, start + CHUNK)
+        end = match.start() + 1 if match is not None else len(data)
+        try:
+            yield data[start:end].decode("utf-8")
+        except UnicodeDecodeError as error:
+            raise UnicodeDecodeError("utf-8", data, start + error.start, start + error.end, error.reason) from None
+        start = end

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from ..model import Dialect
-from .ini import IniFile
+from .ini import IniFile, IniSection
 
 DIRECTIVE = re.compile(r"[;#]\s*cantools-od\s*:\s*dialect\s*[=:]?\s*([\w-]+)", re.IGNORECASE)
 _MAPPING_SECTION = re.compile(r"1[67ab][0-9a-f]{2}\Z", re.IGNORECASE)
@@ -25,32 +25,57 @@ def directive(text: str) -> Dialect | None:
 
 def detect_dialect(parsed: IniFile) -> Dialect:
     """A directive comment at the top, else evidence only a tool of that family writes, else CiA 306."""
-    top = parsed.preamble_comments + (parsed.sections[0].comments if parsed.sections else [])
-    for comment in top:
-        named = directive(comment)
-        if named is not None:
-            return named
+    evidence = DialectEvidence()
     for section in parsed.sections:
-        name = section.name.lower()
-        if _MAPPING_SECTION.match(name) and any(e.key.lower() == "compactsubobj" for e in section.entries):
+        evidence.see(section)
+    return evidence.dialect(parsed.preamble_comments + (parsed.sections[0].comments if parsed.sections else []))
+
+
+class DialectEvidence:
+    """detect_dialect over sections seen one at a time, for a reader that does not keep them."""
+
+    def __init__(self) -> None:
+        self.lely = False
+        self.other: Dialect | None = None  # the first evidence of another family, in file order
+
+    def see(self, section: IniSection) -> None:
+        if not self.lely:
+            self.lely = _lely(section)
+        if self.other is None:
+            self.other = _other(section)
+
+    def dialect(self, top: list[str]) -> Dialect:
+        for comment in top:
+            named = directive(comment)
+            if named is not None:
+                return named
+        if self.lely:
             return Dialect.LELY
-        if name == "deviceinfo" and any(
-            e.key.lower() == "vendorname" and "lely" in e.value.lower() for e in section.entries
-        ):
-            return Dialect.LELY
-    for section in parsed.sections:
-        if any(c.startswith((";StorageLocation", ";TPDODetectCos")) for c in section.comments):
+        return self.other or Dialect.CIA306
+
+
+def _lely(section: IniSection) -> bool:
+    name = section.name.lower()
+    if _MAPPING_SECTION.match(name) and any(e.key.lower() == "compactsubobj" for e in section.entries):
+        return True
+    return name == "deviceinfo" and any(
+        e.key.lower() == "vendorname" and "lely" in e.value.lower() for e in section.entries
+    )
+
+
+def _other(section: IniSection) -> Dialect | None:
+    if any(c.startswith((";StorageLocation", ";TPDODetectCos")) for c in section.comments):
+        return Dialect.CANOPENNODE
+    for entry in section.entries:
+        if entry.comments and entry.comments[0].startswith((";StorageLocation", ";TPDODetectCos")):
             return Dialect.CANOPENNODE
-        for entry in section.entries:
-            if entry.comments and entry.comments[0].startswith((";StorageLocation", ";TPDODetectCos")):
-                return Dialect.CANOPENNODE
-            if entry.key.lower() == "createdby" and re.search("canopen(node|editor)|libedssharp", entry.value, re.I):
-                return Dialect.CANOPENNODE
-            if _NODEID_LAST.search(entry.value):
-                return Dialect.PYTHON_CANOPEN
-            if entry.key.lower() == "edsversion" and entry.value.strip() == "4.2":
-                return Dialect.PYTHON_CANOPEN
-    return Dialect.CIA306
+        if entry.key.lower() == "createdby" and re.search("canopen(node|editor)|libedssharp", entry.value, re.I):
+            return Dialect.CANOPENNODE
+        if _NODEID_LAST.search(entry.value):
+            return Dialect.PYTHON_CANOPEN
+        if entry.key.lower() == "edsversion" and entry.value.strip() == "4.2":
+            return Dialect.PYTHON_CANOPEN
+    return None
 
 
 def unquote(text: str) -> str | None:

@@ -7,6 +7,7 @@ comment, blank, entry and stray lines with one regular expression.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cache
 from importlib import resources
@@ -69,42 +70,86 @@ def _parser() -> Lark:
 
 def parse(text: str) -> IniFile:
     """Split text into sections. Never fails: odd lines are kept as stray."""
-    tree = _parser().parse(text)
-    preamble_comments: list[str] = []
-    preamble_stray: list[tuple[int, str]] = []
-    sections: list[IniSection] = []
-    pending: list[str] = []
-    long_lines: list[tuple[int, int]] = []
-    line = 1  # counted here: lark counts only "\n", files also end lines with a lone "\r"
-    for token in tree.children:
-        assert isinstance(token, Token)
-        lines = _EOL.split(token)
-        first, line = line, line + len(lines) - 1
-        long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
-        if token.type == "PREAMBLE":
-            trailing: list[str] = []
-            _split_body(lines, first, 0, [], trailing, preamble_stray)
-            pending = trailing
-            continue
-        match = _HEADER.match(lines[0])
-        assert match is not None
-        section = IniSection(
-            name=match.group(2).strip(),
-            line=first,
-            column=len(match.group(1)) + 1,
-            comments=pending,
-            header_text=lines[0],
-            closed=bool(match.group(3)),
-        )
-        _split_body(lines, first, 1, section.entries, section.trailing, section.stray)
-        # Comments after a section's last entry stand above the next header.
-        pending, section.trailing = section.trailing, []
-        sections.append(section)
+    stream = Stream([text])
+    sections = list(stream)
     if sections:
-        sections[-1].trailing = pending
+        sections[-1].trailing = stream.trailing
+        return IniFile(sections, [], stream.preamble_stray, stream.long_lines)
+    return IniFile(sections, stream.trailing, stream.preamble_stray, stream.long_lines)
+
+
+class Stream:
+    """The sections of a text one at a time, so that a reader of a large file need not hold them all.
+
+    The text comes in pieces, each but the first starting at a section header.
+
+    Besides the sections, iterating fills in the lines before the first section that are no
+    comment (`preamble_stray`), lines over MAX_LINE (`long_lines`), and, once done, the comment lines
+    after the last entry of the file (`trailing`; the preamble's comments when there is no section).
+    """
+
+    def __init__(self, pieces: Iterable[str]) -> None:
+        self.pieces = pieces
+        self.preamble_stray: list[tuple[int, str]] = []
+        self.long_lines: list[tuple[int, int]] = []
+        self.trailing: list[str] = []
+
+    def __iter__(self) -> Iterator[IniSection]:
+        pending: list[str] = []
+        line = 1  # counted here: lark counts only "\n", files also end lines with a lone "\r"
+        for token in self._tokens():
+            lines = _EOL.split(token)
+            first, line = line, line + len(lines) - 1
+            self.long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
+            if token.type == "PREAMBLE":
+                trailing: list[str] = []
+                _split_body(lines, first, 0, [], trailing, self.preamble_stray)
+                pending = trailing
+                continue
+            match = _HEADER.match(lines[0])
+            assert match is not None
+            section = IniSection(
+                name=match.group(2).strip(),
+                line=first,
+                column=len(match.group(1)) + 1,
+                comments=pending,
+                header_text=lines[0],
+                closed=bool(match.group(3)),
+            )
+            # Comments after a section's last entry stand above the next header.
+            pending = []
+            _split_body(lines, first, 1, section.entries, pending, section.stray)
+            yield section
+        self.trailing = pending
+
+    def _tokens(self) -> Iterator[Token]:
+        for piece in self.pieces:
+            yield from _parser().lex(piece)
+
+
+_HEADER_LINE = re.compile(r"(?:\A|(?<=[\r\n]))[ \t]*\[([^\]\r\n]*)")
+_HEADER_LINE_BYTES = re.compile(_HEADER_LINE.pattern.encode("ascii"))
+
+
+def repeated_section_names(text: str | bytes) -> set[str]:
+    """The names (lower case) of sections given more than once, found without splitting the text.
+
+    Names are remembered by hash, which keeps this small for a large file; a rare collision only
+    adds a name that is given once."""
+    if isinstance(text, str):
+        names: Iterator[str] = (match.group(1) for match in _HEADER_LINE.finditer(text))
     else:
-        preamble_comments = pending
-    return IniFile(sections, preamble_comments, preamble_stray, long_lines)
+        names = (match.group(1).decode("utf-8", "replace") for match in _HEADER_LINE_BYTES.finditer(text))
+    seen: set[int] = set()
+    repeated: set[str] = set()
+    for found in names:
+        name = found.strip().lower()
+        key = hash(name)
+        if key in seen:
+            repeated.add(name)
+        else:
+            seen.add(key)
+    return repeated
 
 
 def _split_body(

@@ -55,13 +55,36 @@ def _canonical_key(section: str, key: str) -> str:
     return key
 
 
+def respell(device: Device, line: int, column: int, written: str, spelling: str) -> None:
+    """Have the preserving writer write `spelling` for `written` (a key, a section name or a list
+    number) at line:column of the original, and nothing else on that line."""
+    device._respell[line] = (column, written, spelling)
+
+
+def _respelled(lines: list[str], edits: dict[int, tuple[int, str, str]]) -> list[str]:
+    out = list(lines)
+    for line, (column, written, spelling) in edits.items():
+        raw = out[line - 1] if 0 < line <= len(out) else ""
+        start = column - 1
+        if raw[start : start + len(written)] != written:
+            start = raw.find(written)  # a column counted otherwise (blanks inside a header's brackets)
+        if start >= 0:
+            out[line - 1] = raw[:start] + spelling + raw[start + len(written) :]
+    return out
+
+
 def preserve(device: Device) -> bytes:
     original = device._original
     if original is None:
         raise ValueError("the device was not read from EDS/DCF bytes")
+    text, encoding, _ = decode_as(original)
+    bom = b"\xef\xbb\xbf" if original.startswith(b"\xef\xbb\xbf") else b""
+    if device._respell:
+        # Respelling is a text edit; the respelled text, read again, is what the model is compared with.
+        text = "".join(_respelled(ini.split_lines(text), device._respell))
+        original = bom + _encoded(text, encoding)
     before = {s.name: s for s in sections(read_bytes(original, device.source, dcf=device.is_dcf), as_written=True)}
     after = {s.name: s for s in sections(device, as_written=True)}
-    text, encoding, _ = decode_as(original)
     parsed: ini.IniFile | None = None
     if device._recount:
         parsed = ini.parse(text)
@@ -70,12 +93,14 @@ def preserve(device: Device) -> bytes:
         return original  # the common case: no second parse of the text
     parsed = parsed or ini.parse(text)
     lines = ini.split_lines(text)
-    out = _apply(lines, _plan(parsed, lines, before, after))
-    bom = b"\xef\xbb\xbf" if original.startswith(b"\xef\xbb\xbf") else b""
+    return bom + _encoded(_apply(lines, _plan(parsed, lines, before, after)), encoding)
+
+
+def _encoded(text: str, encoding: str) -> bytes:
     try:
-        return bom + encode(out, encoding)
+        return encode(text, encoding)
     except UnicodeEncodeError:
-        return bom + out.encode("utf-8")  # new text the old code page cannot hold
+        return text.encode("utf-8")  # new text the old code page cannot hold
 
 
 _DECIMAL = re.compile(r"-?(?:0|[1-9][0-9]*)\Z")
@@ -157,8 +182,9 @@ def _plan(
             last = entries[-1]  # the one that counts when a key is repeated
             raw = lines[last.line - 1]
             if key not in new.entries:
-                for entry in entries:
-                    edits[entry.line] = []
+                if key in old.entries:  # a key that had a value and lost it; an empty key stays
+                    for entry in entries:
+                        edits[entry.line] = []
             elif new.entries[key] != old.entries.get(key):
                 text = _in_style_of(last.value, new.entries[key])
                 edits[last.line] = [raw[: last.value_col - 1] + text + (_eol(raw) or eol)]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import gc
 import re
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
@@ -13,21 +13,26 @@ from ..model import (
     Commissioning,
     Device,
     DeviceInfo,
+    Dialect,
     DummyUsage,
     FileInfo,
     Object,
     ObjectList,
+    Section,
     SubObject,
+    ValueKind,
+    Variable,
+    standard_type,
 )
 from ..model.assemble import assemble, field_defaults
 from . import ini, keys
 from .compact import apply_compact_sections, expand_compact_pdo, expand_compact_sub_objects
-from .decode import decode
-from .dialect import detect_dialect, directive
+from .decode import decode, utf8_pieces
+from .dialect import DialectEvidence, directive
 from .report import Report
 from .sections import Collected, collect, raw_section
 from .storage import read_storage_groups
-from .typed_values import type_values
+from .typed_values import type_entry, type_values
 from .values import parse_int
 
 _OBJECT_SECTION = re.compile(
@@ -54,11 +59,15 @@ def _no_cyclic_gc() -> Iterator[None]:
 
 def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: bool | None = None) -> Device:
     with _no_cyclic_gc():
-        report = Report(file)
-        text, encoding_note = decode(data)
-        if encoding_note:
-            report.warning("EDS100", encoding_note, 1, 1)
-        device = _build(ini.parse(text), report, file)
+        repeated = ini.repeated_section_names(data)
+        try:
+            report = Report(file)
+            device = _build(utf8_pieces(data), repeated, report, file)
+        except UnicodeDecodeError:  # read again as a whole, in the fallback encoding
+            report = Report(file)
+            text, encoding_note = decode(data)
+            report.warning("EDS100", encoding_note or "not UTF-8", 1, 1)
+            device = _build([text], ini.repeated_section_names(text), report, file)
         if dcf is not None:
             device.is_dcf = dcf
         elif file.lower().endswith(".dcf"):
@@ -69,11 +78,102 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
         return device
 
 
-def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
-    for line, length in parsed.long_lines:
-        report.error("EDS001", f"line has {length} characters; CiA 306 allows {ini.MAX_LINE}", line, ini.MAX_LINE + 1)
-    for line, text in parsed.preamble_stray:
-        report.error("EDS101", f"text before the first section: {text[:60]!r}", line, 1)
+class _Build:
+    """One file's sections turned into the model as they are read, so that the text's sections need
+    not all be held at once: a large file costs its model, not its model and its parse besides.
+
+    Sections whose name is given again are held back and merged first; so are sub-object sections
+    read before their object. Values whose form depends on what is only known at the end (the
+    dialect, a DEFTYPE alias) are typed at the end; all others at once."""
+
+    def __init__(self, device: Device, report: Report, repeated: set[str]) -> None:
+        self.device = device
+        self.report = report
+        self.repeated = repeated
+        self.held: dict[str, ini.IniSection] = {}  # repeated names, first section, later ones merged in
+        self.orphans: list[tuple[int, int, ini.IniSection]] = []  # sub-objects read before their object
+        self.compact: list[tuple[int, str, ini.IniSection]] = []
+        self.deferred: list[tuple[Object, SubObject | None, Collected]] = []
+
+    def add(self, section: ini.IniSection) -> None:
+        name = section.name.lower()
+        if name in self.repeated:
+            earlier = self.held.get(name)
+            if earlier is None:
+                self.held[name] = section
+            else:
+                _merge(earlier, section, self.report)
+            return
+        self.read(section)
+
+    def finish(self) -> None:
+        for section in self.held.values():
+            self.read(section)
+        for index, subindex, section in self.orphans:
+            parent = self.device.objects.get(index)
+            if parent is None:
+                why = "its object has no section"
+                self.report.error("EDS103", f"[{section.name}]: {why}; kept as text", section.line, section.column)
+                self.device.other_sections.append(raw_section(section, self.report))
+                continue
+            self.read_sub(parent, subindex, section)
+        type_values(self.device, self.deferred, self.report)
+
+    def read(self, section: ini.IniSection) -> None:
+        device, report = self.device, self.report
+        _check_header(section, report)
+        match = _OBJECT_SECTION.match(section.name)
+        if match is None:
+            _read_file_section(device, section, report)
+            return
+        index = int(match.group(1), 16)
+        if match.group(2) is not None:
+            subindex = int(match.group(2), 16)
+            parent = device.objects.get(index)
+            if subindex > 0xFF:
+                report.error(
+                    "EDS103", f"[{section.name}]: sub-index above FFh; kept as text", section.line, section.column
+                )
+                device.other_sections.append(raw_section(section, report))
+            elif parent is None:
+                self.orphans.append((index, subindex, section))
+            else:
+                self.read_sub(parent, subindex, section)
+        elif match.group(3) is not None:
+            self.compact.append((index, match.group(3).lower(), section))
+        else:
+            collected = collect(section, keys.OBJECT_KEYS, report)
+            fields = {"index": index, "subs": {}, **collected.fields, **collected.common()}
+            obj = assemble(Object, fields, _OBJECT_DEFAULTS)
+            device.objects[index] = obj
+            self.type_or_defer(obj, None, collected)
+
+    def read_sub(self, parent: Object, subindex: int, section: ini.IniSection) -> None:
+        collected = collect(section, keys.OBJECT_KEYS, self.report)
+        for field, spelling in (("sub_number", "SubNumber"), ("compact_sub_obj", "CompactSubObj")):
+            if field in collected.fields:
+                del collected.fields[field]
+                collected.extra[spelling] = next(
+                    e.value for e in section.entries if keys.normalize(e.key) == spelling.lower()
+                )
+        sub = assemble(SubObject, {**collected.fields, **collected.common()}, _SUB_DEFAULTS)
+        parent.subs[subindex] = sub
+        self.type_or_defer(parent, sub, collected)
+
+    def type_or_defer(self, obj: Object, sub: SubObject | None, collected: Collected) -> None:
+        if not collected.deferred:
+            return
+        var: Variable = sub if sub is not None else obj
+        dtype = standard_type(var.data_type) if var.data_type is not None else None
+        if dtype is None or dtype.kind is ValueKind.STRING:
+            self.deferred.append((obj, sub, collected))
+            return
+        for field, entry in collected.deferred.items():
+            type_entry(self.device, var, obj, field, entry, self.report)
+
+
+def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str) -> Device:
+    stream = ini.Stream(pieces)
     device = Device.model_construct(
         file_info=FileInfo(),
         device_info=DeviceInfo(),
@@ -87,46 +187,37 @@ def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
         module_sections=[],
         other_sections=[],
         trailing_comments=[],
-        dialect=detect_dialect(parsed),
+        dialect=Dialect.CIA306,
         is_dcf=False,
         node_id=None,
         source=file,
         diagnostics=report.diagnostics,
     )
-    if parsed.sections:
-        # A dialect directive is file metadata (kept in `dialect`), not a comment on the first section.
-        top = parsed.preamble_comments + parsed.sections[0].comments
-        parsed.sections[0].comments = [c for c in top if directive(c) is None]
-        device.trailing_comments = parsed.sections[-1].trailing
-    elif parsed.preamble_comments:
-        device.trailing_comments = parsed.preamble_comments
-    subs: list[tuple[int, int, ini.IniSection]] = []
-    compact: list[tuple[int, str, ini.IniSection]] = []
-    deferred: list[tuple[Object, SubObject | None, Collected]] = []
-    for section in _merge_duplicates(parsed.sections, report):
-        _check_header(section, report)
-        match = _OBJECT_SECTION.match(section.name)
-        if match is None:
-            _read_file_section(device, section, report)
-            continue
-        index = int(match.group(1), 16)
-        if match.group(2) is not None:
-            subs.append((index, int(match.group(2), 16), section))
-        elif match.group(3) is not None:
-            compact.append((index, match.group(3).lower(), section))
-        else:
-            collected = collect(section, keys.OBJECT_KEYS, report)
-            fields = {"index": index, "subs": {}, **collected.fields, **collected.common()}
-            obj = assemble(Object, fields, _OBJECT_DEFAULTS)
-            device.objects[index] = obj
-            deferred.append((obj, None, collected))
-    _read_sub_sections(device, subs, deferred, report)
+    build = _Build(device, report, repeated)
+    evidence = DialectEvidence()
+    top: list[str] | None = None
+    for section in stream:
+        if top is None:
+            # A dialect directive is file metadata (kept in `dialect`), not a comment on the first section.
+            top = section.comments
+            section.comments = [c for c in top if directive(c) is None]
+            for line, stray in stream.preamble_stray:
+                report.error("EDS101", f"text before the first section: {stray[:60]!r}", line, 1)
+        evidence.see(section)
+        build.add(section)
+    if top is None:
+        for line, stray in stream.preamble_stray:
+            report.error("EDS101", f"text before the first section: {stray[:60]!r}", line, 1)
+    device.trailing_comments = stream.trailing
+    device.dialect = evidence.dialect(top if top is not None else stream.trailing)
+    for line, length in stream.long_lines:
+        report.error("EDS001", f"line has {length} characters; CiA 306 allows {ini.MAX_LINE}", line, ini.MAX_LINE + 1)
+    build.finish()
     for obj in device.objects.values():
         if len(obj.subs) > 1:
             obj.subs = dict(sorted(obj.subs.items()))
-    type_values(device, deferred, report)
     expand_compact_sub_objects(device)
-    apply_compact_sections(device, compact, report)
+    apply_compact_sections(device, build.compact, report)
     expand_compact_pdo(device)
     device.objects = dict(sorted(device.objects.items()))
     read_storage_groups(device)
@@ -136,52 +227,16 @@ def _build(parsed: ini.IniFile, report: Report, file: str) -> Device:
     return device
 
 
-def _read_sub_sections(
-    device: Device,
-    subs: list[tuple[int, int, ini.IniSection]],
-    deferred: list[tuple[Object, SubObject | None, Collected]],
-    report: Report,
-) -> None:
-    """[xxxxsubN] sections into their objects; one without its object is kept as text (EDS103)."""
-    for index, subindex, section in subs:
-        parent = device.objects.get(index)
-        if parent is None or subindex > 0xFF:
-            why = "its object has no section" if parent is None else "sub-index above FFh"
-            report.error("EDS103", f"[{section.name}]: {why}; kept as text", section.line, section.column)
-            device.other_sections.append(raw_section(section, report))
-            continue
-        collected = collect(section, keys.OBJECT_KEYS, report)
-        for field, spelling in (("sub_number", "SubNumber"), ("compact_sub_obj", "CompactSubObj")):
-            if field in collected.fields:
-                del collected.fields[field]
-                collected.extra[spelling] = next(
-                    e.value for e in section.entries if keys.normalize(e.key) == spelling.lower()
-                )
-        sub = assemble(SubObject, {**collected.fields, **collected.common()}, _SUB_DEFAULTS)
-        parent.subs[subindex] = sub
-        deferred.append((parent, sub, collected))
-
-
-def _merge_duplicates(sections: list[ini.IniSection], report: Report) -> list[ini.IniSection]:
-    """One section per name: a repeated section's entries join the first one's."""
-    first: dict[str, ini.IniSection] = {}
-    merged: list[ini.IniSection] = []
-    for section in sections:
-        name = section.name.lower()
-        earlier = first.get(name)
-        if earlier is None:
-            first[name] = section
-            merged.append(section)
-            continue
-        report.warning(
-            "EDS002",
-            f"section [{section.name}] given again (first on line {earlier.line}); its keys are merged",
-            section.line,
-            section.column,
-        )
-        earlier.entries.extend(section.entries)
-        earlier.stray.extend(section.stray)
-    return merged
+def _merge(earlier: ini.IniSection, section: ini.IniSection, report: Report) -> None:
+    """A repeated section's entries join the first one's."""
+    report.warning(
+        "EDS002",
+        f"section [{section.name}] given again (first on line {earlier.line}); its keys are merged",
+        section.line,
+        section.column,
+    )
+    earlier.entries.extend(section.entries)
+    earlier.stray.extend(section.stray)
 
 
 def _check_header(section: ini.IniSection, report: Report) -> None:
@@ -191,20 +246,36 @@ def _check_header(section: ini.IniSection, report: Report) -> None:
         report.error("EDS101", f"not a key=value entry: {text[:60]!r}", line, 1)
 
 
+_SECTION_SPELLINGS = {
+    "fileinfo": keys.FILE_INFO,
+    "deviceinfo": keys.DEVICE_INFO,
+    "dummyusage": keys.DUMMY_USAGE,
+    "comments": keys.COMMENTS,
+    **{name: spelling for name, (spelling, _) in keys.OBJECT_LISTS.items()},
+    **{name: keys.COMMISSIONING for name in keys.COMMISSIONING_SPELLINGS},
+}
+
+
 def _read_file_section(device: Device, section: ini.IniSection, report: Report) -> None:
     name = section.name.lower()
+    part: Section | None = None
     if name == "fileinfo":
-        device.file_info = _keyed(FileInfo, section, keys.FILE_INFO_KEYS, report)
+        part = device.file_info = _keyed(FileInfo, section, keys.FILE_INFO_KEYS, report)
     elif name == "deviceinfo":
-        device.device_info = _keyed(DeviceInfo, section, keys.DEVICE_INFO_KEYS, report)
+        part = device.device_info = _keyed(DeviceInfo, section, keys.DEVICE_INFO_KEYS, report)
     elif name in keys.COMMISSIONING_SPELLINGS:
-        device.commissioning = _keyed(Commissioning, section, keys.COMMISSIONING_KEYS, report)
+        part = device.commissioning = _keyed(Commissioning, section, keys.COMMISSIONING_KEYS, report)
     elif name in keys.OBJECT_LISTS:
-        setattr(device, keys.OBJECT_LISTS[name][1], _object_list(section, report))
+        part = _object_list(section, report)
+        setattr(device, keys.OBJECT_LISTS[name][1], part)
     elif name == "dummyusage":
-        device.dummy_usage = _dummy_usage(section, report)
+        part = device.dummy_usage = _dummy_usage(section, report)
     elif name == "comments":
-        device.comments = _comments(section, report)
+        part = device.comments = _comments(section, report)
+    if part is not None:
+        if part.origin is not None and section.name != _SECTION_SPELLINGS[name]:
+            # "" is the section's own name, as for comments; a new dict, as origins may share an empty one
+            part.origin.spelled = {**part.origin.spelled, "": section.name}
     elif _MODULE_SECTION.match(section.name):
         device.module_sections.append(raw_section(section, report))
     else:
@@ -246,7 +317,28 @@ def _object_list(section: ini.IniSection, report: Report) -> ObjectList:
             collected.extra[str(position)] = text
             continue
         entries[position] = index
-    return ObjectList(supported_objects=count, entries=entries, **collected.common())
+    found = ObjectList(supported_objects=count, entries=entries, **collected.common())
+    found._repeats = _repeated_positions(section)
+    return found
+
+
+def _repeated_positions(section: ini.IniSection) -> dict[int, list[tuple[int, int, int]]]:
+    """Positions written more than once: each of their entries as (line, key column, object index)."""
+    written = [entry.key for entry in section.entries]
+    if len(set(written)) == len(written):
+        return {}  # the common case
+    by_position: dict[int, list[tuple[int, int, int]]] = {}
+    for entry in section.entries:
+        key = entry.key
+        if not (key.isdigit() and key == str(int(key)) and int(key) > 0):
+            continue
+        try:
+            index, _ = parse_int(entry.value)
+        except ValueError:
+            continue
+        if isinstance(index, int) and 0 <= index <= 0xFFFF:
+            by_position.setdefault(int(key), []).append((entry.line, entry.key_col, index))
+    return {position: found for position, found in by_position.items() if len(found) > 1}
 
 
 def _dummy_usage(section: ini.IniSection, report: Report) -> DummyUsage:

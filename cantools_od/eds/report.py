@@ -9,6 +9,10 @@ class Report:
     def __init__(self, file: str) -> None:
         self.file = file
         self.diagnostics: list[Diagnostic] = []
+        self.layouts: dict[tuple[tuple[str, tuple[int, int, int]], ...], dict[str, tuple[int, int, int]]] = {}
+        """Key layouts of sections read so far, so that sections written alike share one."""
+        self.strings: dict[str, str] = {}
+        """Texts read so far, so that a text written many times is held once."""
 
     def add(self, code: str, severity: Severity, message: str, line: int = 0, column: int = 0) -> None:
         location = Location(file=self.file, line=line, column=column)

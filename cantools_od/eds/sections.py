@@ -5,11 +5,13 @@ from __future__ import annotations
 from typing import Any
 
 from ..model import AccessType, ObjectKind, Origin, RawSection
-from ..model.assemble import assemble
+from ..model.assemble import assemble, field_defaults
 from .ini import Entry, IniSection
 from .keys import KeySpec, Kind, normalize
 from .report import Report
 from .values import parse_int
+
+_ORIGIN = {**field_defaults(Origin), "keys": {}, "spelled": {}}  # shared empty dicts: never edited in place
 
 
 class Collected:
@@ -29,34 +31,34 @@ class Collected:
 
 
 def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> Collected:
-    origin = assemble(
-        Origin, {"file": report.file, "line": section.line, "column": section.column, "keys": {}, "spelled": {}}, {}
-    )
+    origin = assemble(Origin, {"file": report.file, "line": section.line, "column": section.column}, _ORIGIN)
     collected = Collected(origin)
     if section.comments:
         collected.comments[""] = section.comments
-    keys = origin.keys
-    spelled: dict[str, str] = {}  # canonical name → the spelling its earlier entry used
+    layout: dict[str, tuple[int, int, int]] = {}  # key positions relative to the header line
+    spelled: dict[str, str] = {}  # canonical name → the spelling its last entry used, when not canonical
+    written: dict[str, str] = {}  # canonical name → the spelling its earlier entry used
     for entry in section.entries:
         spec = table.get(normalize(entry.key))
         name = spec[0] if spec is not None else entry.key
-        if name in keys:
+        if name in layout:
             report.warning(
                 "EDS002",
-                f"[{section.name}] {entry.key} given again (first on line {keys[name][0]}); the last one counts",
+                f"[{section.name}] {entry.key} given again (first on line {section.line + layout[name][0]}); "
+                "the last one counts",
                 entry.line,
                 entry.key_col,
             )
-            collected.extra.pop(spelled[name], None)  # the earlier value, whichever form it took
+            collected.extra.pop(written[name], None)  # the earlier value, whichever form it took
             if spec is not None:
                 collected.fields.pop(spec[1], None)
                 collected.deferred.pop(spec[1], None)
-        keys[name] = (entry.line, entry.key_col, entry.value_col)
-        spelled[name] = entry.key
+        layout[name] = (entry.line - section.line, entry.key_col, entry.value_col)
+        written[name] = entry.key
         if spec is not None and entry.key != name:
-            origin.spelled[name] = entry.key
-        elif name in origin.spelled:
-            del origin.spelled[name]  # a repeated key, spelled right the last time
+            spelled[name] = entry.key
+        else:
+            spelled.pop(name, None)  # a repeated key, spelled right the last time
         if entry.comments:
             collected.comments[name] = list(entry.comments)
         if spec is None:
@@ -66,6 +68,10 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
         if kind is Kind.VALUE:
             collected.deferred[field] = entry
             continue
+        if kind is Kind.STR:
+            # Names repeat across sections ("Highest sub-index supported"): one string for each.
+            collected.fields[field] = report.strings.setdefault(entry.value, entry.value)
+            continue
         try:
             value = convert(entry.value, kind)
         except ValueError as error:
@@ -73,6 +79,10 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
             collected.extra[entry.key] = entry.value
             continue
         collected.fields[field] = value
+    # Sections written by one tool share few layouts: one dict each saves a dict of tuples per section.
+    origin.layout = report.layouts.setdefault(tuple(layout.items()), layout)
+    if spelled:
+        origin.spelled = spelled
     return collected
 
 

@@ -135,6 +135,9 @@ def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: 
                     f"inline comment {comment!r} after the value; CiA 306 has none, tools disagree on it",
                 )
                 return Parsed(retry.value, (*retry.notes, note), comment)
+        if type_name == "DOMAIN" and text in ("0", "0x0", "0x00"):  # CANopenNode's "empty" DOMAIN
+            why = f"{text!r} for DOMAIN: CANopenNode's way to say empty; other tools reject it"
+            return Parsed(RawValue(text=text), (("EDS030", Severity.WARNING, why),))
         return Parsed(RawValue(text=text), (("EDS030", Severity.ERROR, f"{error} for {type_name}"),))
 
 

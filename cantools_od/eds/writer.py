@@ -28,7 +28,7 @@ class Hints:
         self._lines = ini.split_lines(decode_as(original)[0]) if original else []
 
     def text(self, section: Section, key: str) -> str | None:
-        where = section.origin.keys.get(key) if section.origin is not None and self._lines else None
+        where = section.origin.where(key) if section.origin is not None and self._lines else None
         if where is None or not 0 < where[0] <= len(self._lines) or where[2] < 1:
             return None
         return self._lines[where[0] - 1][where[2] - 1 :].strip()
@@ -163,7 +163,7 @@ def _kept_empty(section: Section, key: str, kind: Kind, style: _Style) -> bool:
         return False
     if key in section.comments:
         return True
-    return kind in (Kind.VALUE, Kind.ACCESS) and section.origin is not None and key in section.origin.keys
+    return kind in (Kind.VALUE, Kind.ACCESS) and section.origin is not None and section.origin.where(key) is not None
 
 
 def _variable_entries(device: Device, var: Variable, owner: Object, style: _Style) -> dict[str, str]:

@@ -49,6 +49,13 @@ FAMILIES: dict[str, Family] = {
     "cobid": Family("cobid", "COB-IDs and PDO communication parameters", "CiA 301 §7.2, §7.3, §7.5.2.35/37"),
     "network": Family("network", "Several nodes of one network (lint --network)", "CiA 301 §7.2, §7.3"),
     "portability": Family("portability", "What peer tools read differently (dialects)", "CiA 306 §4"),
+    "standard": Family(
+        "standard", "CiA 301/302 standard objects (and CiA 402 ones) against their definitions", "CiA 301 §7.5; CiA 402"
+    ),
+    # Its examples are fragments of a CANopenNode project, which the EDS frame of the examples is not.
+    "canopennode": Family(
+        "canopennode", "What the CANopenNode v4 stack needs (lint --profile canopennode)", eds_examples=False
+    ),
     "import": Family("tool", "Reported by import-table", eds_examples=False),
     "gen": Family("tool", "Reported by gen", eds_examples=False),
     "lint": Family("tool", "Reported by the linter about itself", eds_examples=False),
@@ -57,6 +64,8 @@ FAMILIES: dict[str, Family] = {
 # code -> kebab-case name, per family.
 NAMES: dict[str, dict[str, str]] = {
     "reader": {
+        "EDS000": "not-a-device-description",
+        "JSN001": "not-a-model",
         "EDS002": "duplicate-section-or-key",
         "EDS030": "value-invalid-for-type",
         "EDS032": "non-portable-value-form",
@@ -82,6 +91,7 @@ NAMES: dict[str, dict[str, str]] = {
     },
     "syntax": {
         "EDS001": "line-too-long",
+        "EDS091": "name-peers-do-not-find",
         "EDS003": "unknown-key",
         "EDS004": "unknown-section",
         "EDS005": "name-too-long",
@@ -228,6 +238,25 @@ NAMES: dict[str, dict[str, str]] = {
     },
     "lint": {
         "LNT001": "rule-failed",
+    },
+    "standard": {
+        "STD001": "standard-object-type",
+        "STD002": "standard-array-or-record",
+        "STD003": "standard-data-type",
+        "STD004": "standard-access-type",
+        "STD005": "standard-pdo-mapping",
+        "STD006": "standard-value",
+    },
+    "canopennode": {
+        "CNO001": "type-stack-cannot-hold",
+        "CNO002": "sub0-not-unsigned8",
+        "CNO003": "array-elements-differ",
+        "CNO004": "array-gaps-or-empty",
+        "CNO005": "required-object-missing",
+        "CNO006": "count-label-out-of-limits",
+        "CNO007": "default-stack-cannot-store",
+        "CNO008": "nodeid-not-added-by-stack",
+        "CNO009": "writable-string-without-memory",
     },
 }
 

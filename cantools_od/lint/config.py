@@ -18,10 +18,11 @@ from typing import Any
 
 from ..eds.format import IntStyle, Radix
 from ..eds.keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, Kind
+from ..names import UnknownName, check_names
 from .codes import matches
 
 KEYS = ("select", "ignore", "per-file-ignores", "integer-radix")
-"""Every key `[tool.cantools-od]` may hold."""
+"""Every key `[tool.cantools-od]` may hold; any other is an error, so that a misspelt one is not ignored."""
 
 # Keys whose value is an integer `fmt` spells: the typed values and the integer keys of the CiA 306 tables.
 INTEGER_KEYS = tuple(
@@ -85,6 +86,10 @@ def _table(start: Path) -> tuple[Path | None, dict[str, Any]]:
     table = data.get("tool", {}).get("cantools-od", {})
     if not isinstance(table, dict):
         raise ValueError(f"{path}: [tool.cantools-od] must be a table")
+    try:
+        check_names("key in [tool.cantools-od]", table, KEYS)
+    except UnknownName as error:
+        raise ValueError(f"{path}: {error}") from None
     return path, table
 
 
@@ -141,4 +146,27 @@ def _codes(table: dict[str, object], key: str, path: Path) -> tuple[str, ...]:
     value = table.get(key, [])
     if not isinstance(value, list) or not all(isinstance(code, str) for code in value):
         raise ValueError(f"{path}: [tool.cantools-od] {key} must be a list of rule codes, prefixes or families")
-    return tuple(code.strip().upper() for code in value)
+    codes = tuple(code.strip().upper() for code in value)
+    try:
+        check_selectors(codes)
+    except UnknownName as error:
+        raise ValueError(f"{path}: [tool.cantools-od] {key}: {error}") from None
+    return codes
+
+
+def check_selectors(selectors: tuple[str, ...]) -> None:
+    """Raise UnknownName for a selector that is no rule code, code prefix (`EDS`, `PDO0`) or family name."""
+    from .codes import FAMILIES, load
+    from .rules import RULES
+
+    load()
+    codes = set(RULES)
+    prefixes = {code[:length] for code in codes for length in range(1, len(code))}
+    families = set(FAMILIES)
+    hint = "a rule code (`cantools-od rules` lists them), a prefix such as EDS or PDO0, or a family "
+    hint += f"({', '.join(sorted(families))})"
+
+    def accepted(name: str) -> bool:
+        return name in prefixes or name.lower() in families
+
+    check_names("rule code", selectors, codes, accepts=accepted, hint=hint)

@@ -27,11 +27,11 @@ UploadFile receives the content of a DOMAIN read from the device, so the object 
 DownloadFile is written to the device, so the object should be `wo` (CiA 306 §5). lely forces
 these access types and warns.""",
     (
-        ex.NODE_5 + "[1F50]\nParameterName=Program\nObjectType=0x7\nDataType=0x000F\nAccessType=rw\nPDOMapping=0\n"
+        ex.NODE_5 + "[2F50]\nParameterName=Program\nObjectType=0x7\nDataType=0x000F\nAccessType=rw\nPDOMapping=0\n"
         "DownloadFile=firmware.bin"
     ),
     fixed=(
-        ex.NODE_5 + "[1F50]\nParameterName=Program\nObjectType=0x7\nDataType=0x000F\nAccessType=wo\nPDOMapping=0\n"
+        ex.NODE_5 + "[2F50]\nParameterName=Program\nObjectType=0x7\nDataType=0x000F\nAccessType=wo\nPDOMapping=0\n"
         "DownloadFile=firmware.bin"
     ),
 )

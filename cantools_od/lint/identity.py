@@ -96,18 +96,28 @@ def _fix_identity(subindex: int, field: str) -> Callable[[Device], None]:
     "LSS_SerialNumber differs from 1018h sub4",
     """
 In a DCF, [DeviceComissioning] LSS_SerialNumber is the serial number of the configured device,
-which 1018h sub4 also states (CiA 306 §5). LSS masters address the device by it; two
-different numbers cannot both be right. Not checked when either side is missing or 0 (not
-configured).""",
-    (ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17") + ex.identity(serial="0x18")),
-    fixed=(ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17") + ex.identity(serial="0x17")),
+which 1018h sub4 also states as its ParameterValue (CiA 306 §5.3). LSS masters address the
+device by it; two different numbers cannot both be right. Not checked when either side is missing
+or 0 (not configured). A DefaultValue is the EDS's default, not this device's number: it is not
+compared.
+
+Error: the LSS master looks for a device that does not exist.
+Fix: none offered (which number is right is known only on the device).""",
+    (
+        ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
+        + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x18")
+    ),
+    fixed=(
+        ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
+        + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x17")
+    ),
 )
 def serial_number(ctx: Context) -> Iterator[Finding]:
     section, obj = ctx.device.commissioning, ctx.device.objects.get(IDENTITY)
     sub = obj.subs.get(IDENTITY_SERIAL) if obj is not None else None
     if section is None or not section.lss_serial_number or sub is None:
         return  # 0: not configured
-    described = plain_int(sub.value())
+    described = plain_int(sub.parameter_value)
     if described and described != section.lss_serial_number:
         message = f"LSS_SerialNumber=0x{section.lss_serial_number:08X} but 1018h sub4 is 0x{described:08X}"
         yield ctx.report("EDS045", message, ctx.value_at(section, "LSS_SerialNumber"))

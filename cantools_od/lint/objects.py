@@ -6,6 +6,7 @@ CiA 306 §4.6.3; CiA 301 data types and index areas.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from dataclasses import replace
 
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
 from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
@@ -14,7 +15,7 @@ from ..model.datatypes import STANDARD_TYPES
 from .common import explicit_objects, explicit_vars, given, where
 from .rules import Context, Finding, Fix, rule
 
-E = Severity.ERROR
+E, W = Severity.ERROR, Severity.WARNING
 
 _COMPOUND = (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
 _TYPE_KINDS = (ObjectKind.DEFTYPE, ObjectKind.DEFSTRUCT)
@@ -62,7 +63,7 @@ def missing_keys(ctx: Context) -> Iterator[Finding]:
         for key in _mandatory(obj, subindex is not None):
             if not given(var, key):
                 kind = "a sub-object" if subindex is not None else f"{obj.kind.name}"
-                empty = var.origin is not None and key in var.origin.keys
+                empty = var.origin is not None and var.origin.where(key) is not None
                 message = f"{where(obj, subindex)}: {key} is empty" if empty else f"{where(obj, subindex)}: no {key}"
                 yield ctx.report("EDS020", f"{message}; {kind} needs it", ctx.at(var, key))
 
@@ -75,7 +76,13 @@ def missing_keys(ctx: Context) -> Iterator[Finding]:
 Per the obligation matrix of CiA 306 (§4.6.3) ARRAY, RECORD and DEFSTRUCT objects without
 CompactSubObj describe their values in sub-objects and carry no DataType, AccessType,
 DefaultValue, PDOMapping or limits; DOMAIN objects have no PDOMapping, SubNumber or limits; VAR
-and sub-objects have no SubNumber. Tools disagree about what such keys mean.""",
+and sub-objects have no SubNumber. Tools disagree about what such keys mean.
+
+Error, as a rule: a tool may take the key at its word (sub-objects on a VAR, a mappable DOMAIN).
+Warning where the value says what the object type already says: `SubNumber=0` on a VAR or a
+sub-object, `PDOMapping=0` on a DOMAIN (CANopenNode's editors write both); every tool reads them
+as if they were absent.
+Fix: none offered; delete the key.""",
     (
         "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n[2000sub0]\n"
         "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
@@ -94,7 +101,18 @@ def forbidden_keys(ctx: Context) -> Iterator[Finding]:
         for key in _forbidden(obj, subindex is not None):
             if _written(var, key, subindex is not None):
                 kind = "a sub-object" if subindex is not None else f"an object of type {obj.kind.name}"
-                yield ctx.report("EDS024", f"{where(obj, subindex)}: {key} is not allowed on {kind}", ctx.at(var, key))
+                message = f"{where(obj, subindex)}: {key} is not allowed on {kind}"
+                finding = ctx.report("EDS024", message, ctx.at(var, key))
+                yield replace(finding, severity=W) if _says_absent(var, key, subindex is not None) else finding
+
+
+def _says_absent(var: Variable, key: str, sub: bool) -> bool:
+    """`SubNumber=0` or `PDOMapping=0`: the value every tool takes when the key is absent."""
+    if key == "PDOMapping":
+        return var.pdo_mapping is False
+    if sub:  # a sub-object section keeps SubNumber as text
+        return var.extra.get(key, "").strip().lower() in ("0", "0x0", "0x00")
+    return key == "SubNumber" and isinstance(var, Object) and var.sub_number == 0
 
 
 def _written(var: Variable, key: str, sub: bool) -> bool:

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterator
+from dataclasses import replace
 
 from ..eds import keys
+from ..eds.preserve import respell
 from ..model import Device, Location, ObjectList, Severity
 from ..model.cia301.objects import DATA_TYPE_AREA, MANUFACTURER_AREA
 from ..model.cia301.objects import MANDATORY as MANDATORY_INDICES
@@ -37,6 +39,16 @@ def listings(device: Device) -> Iterator[tuple[str, ObjectList, int, int]]:
         if found is not None:
             for position, index in sorted(found.entries.items()):
                 yield name, found, position, index
+
+
+def listed_indices(device: Device) -> set[int]:
+    """Every listed index, also those a repeated position hides (EDS015 renumbers them)."""
+    listed = {index for _, _, _, index in listings(device)}
+    for name in LISTS:
+        found = object_list(device, name)
+        if found is not None:
+            listed.update(index for entries in found.repeats.values() for _, _, index in entries)
+    return listed
 
 
 def _entry_at(ctx: Context, found: ObjectList, position: int) -> Location:
@@ -105,19 +117,21 @@ Objects implied by CompactPDO need not be listed.""",
     ),
 )
 def unlisted(ctx: Context) -> Iterator[Finding]:
-    listed = {index for _, _, _, index in listings(ctx.device)}
+    listed = listed_indices(ctx.device)
     for index, obj in ctx.device.objects.items():
         target = home(index)
         if obj.implicit or target is None or index in listed:
             continue
-        fix = Fix(f"add 0x{index:04X} to [{target}]", True, _fix_list(index))
+        found = object_list(ctx.device, target)
+        count_line = (found.origin.where("SupportedObjects") or (0,))[0] if found and found.origin else 0
+        fix = Fix(f"add 0x{index:04X} to [{target}]", True, _fix_list(index), (count_line,) if count_line else ())
         yield ctx.report("EDS012", f"[{index:04X}] is in no object list; it belongs in [{target}]", ctx.at(obj), fix)
 
 
 def _fix_list(index: int) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
         target = home(index)
-        if target is None or any(i == index for _, _, _, i in listings(device)):
+        if target is None or index in listed_indices(device):
             return
         found = _ensure(device, target)
         was_right = found.supported_objects == len(found.entries)
@@ -172,7 +186,12 @@ def _fix_missing(name: str) -> Callable[[Device], None]:
     """
 [MandatoryObjects] lists exactly the objects every CANopen device has: 1000h (device type),
 1001h (error register) and 1018h (identity). Other objects listed there, or one of these three
-listed in another list, make tools misjudge which objects the device must implement.""",
+listed in another list, make tools misjudge which objects the device must implement.
+
+Error when 1000h, 1001h or 1018h is missing from [MandatoryObjects]: a tool that checks the
+mandatory list finds the device incomplete. Warning for another object listed there (often 1017h,
+which CiA 301 makes mandatory only without node guarding): every tool still finds and reads it.
+Fix (unsafe, shown only): move the entry; it renumbers both lists.""",
     (
         "[MandatoryObjects]\nSupportedObjects=4\n1=0x1000\n2=0x1001\n3=0x1018\n4=0x1017\n\n"
         "[OptionalObjects]\nSupportedObjects=0\n\n[1017]\nParameterName=Producer heartbeat time\n"
@@ -192,7 +211,8 @@ def mandatory_list(ctx: Context) -> Iterator[Finding]:
                 continue  # EDS018
             fix = Fix(f"move 0x{index:04X} to [{target}]", False, _fix_move(name, index, target))
             message = f"[{name}] {position}=0x{index:04X}: belongs in [{target}]"
-            yield ctx.report("EDS013", message, _entry_at(ctx, found, position), fix)
+            finding = ctx.report("EDS013", message, _entry_at(ctx, found, position), fix)
+            yield replace(finding, severity=W) if name == MANDATORY else finding
 
 
 @rule(
@@ -316,14 +336,14 @@ def _fix_duplicate(index: int) -> Callable[[Device], None]:
 SupportedObjects gives the number of entries of an object list (CiA 306, object lists); tools read
 exactly that many entries, so a wrong count drops objects or fails on a missing entry.""",
     (
-        "[OptionalObjects]\nSupportedObjects=1\n1=0x1016\n2=0x1017\n\n[1016]\n"
-        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "[OptionalObjects]\nSupportedObjects=1\n1=0x1006\n2=0x1017\n\n[1006]\n"
+        "ParameterName=Communication cycle period\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     fixed=(
-        "[OptionalObjects]\nSupportedObjects=2\n1=0x1016\n2=0x1017\n\n[1016]\n"
-        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "[OptionalObjects]\nSupportedObjects=2\n1=0x1006\n2=0x1017\n\n[1006]\n"
+        "ParameterName=Communication cycle period\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
@@ -331,9 +351,9 @@ exactly that many entries, so a wrong count drops objects or fails on a missing 
 def supported_count(ctx: Context) -> Iterator[Finding]:
     for name in LISTS:
         found = object_list(ctx.device, name)
-        if found is None or _invalid_count(found) or found.supported_objects == len(found.entries):
+        if found is None or _invalid_count(found) or found.supported_objects == written_entries(found):
             continue
-        count = len(found.entries)
+        count = written_entries(found)
         fix = Fix(f"set SupportedObjects={count}", True, _fix_count(name))
         if found.supported_objects is None:
             message = f"[{name}]: no SupportedObjects (the list has {count} entries)"
@@ -349,11 +369,16 @@ def _invalid_count(found: ObjectList) -> bool:
     return any(keys.normalize(key) == "supportedobjects" for key in found.extra)  # the reader reported it
 
 
+def written_entries(found: ObjectList) -> int:
+    """The entries the list writes: a position written twice counts twice (EDS015 renumbers it)."""
+    return len(found.entries) + sum(len(entries) - 1 for entries in found.repeats.values())
+
+
 def _fix_count(name: str) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
         found = object_list(device, name)
         if found is not None:
-            found.supported_objects = len(found.entries)
+            found.supported_objects = written_entries(found)
 
     return apply
 
@@ -363,17 +388,24 @@ def _fix_count(name: str) -> Callable[[Device], None]:
     E,
     "Object list not numbered 1..n",
     """
-The entries of an object list are keyed 1, 2, ... n in decimal, without gaps, leading zeros or
-other keys (CiA 306, object lists). Tools read keys 1..SupportedObjects and miss the others.""",
+The entries of an object list are keyed 1, 2, ... n in decimal, without gaps, repeats, leading
+zeros or other keys (CiA 306 §4.5.2). Tools read keys 1..SupportedObjects and miss the others;
+python-canopen and lely's dcfchk refuse a file with a number written twice.
+
+Fix (safe): a number written twice keeps its first entry, and each later one moves to the next
+free number (the first gap, else after the last): one line changes per repeat, nothing else.
+Gaps without repeats are closed by renumbering the entries after the gap, in order.
+
+For example, `12=0x3078`, `12=0x3079` with no 13 becomes `12=0x3078`, `13=0x3079`.""",
     (
-        "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n3=0x1016\n\n[1016]\n"
-        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n3=0x1006\n\n[1006]\n"
+        "ParameterName=Communication cycle period\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     fixed=(
-        "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n2=0x1016\n\n[1016]\n"
-        "ParameterName=Consumer heartbeat\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+        "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n2=0x1006\n\n[1006]\n"
+        "ParameterName=Communication cycle period\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
@@ -383,16 +415,62 @@ def numbering(ctx: Context) -> Iterator[Finding]:
         found = object_list(ctx.device, name)
         if found is None:
             continue
+        yield from _repeats(ctx, name, found)
         positions = sorted(found.entries)
         gaps = sorted(set(range(1, max(positions, default=0) + 1)) - set(positions))
+        gaps = gaps[sum(len(entries) - 1 for entries in found.repeats.values()) :]  # filled by the repeats
         if gaps:
-            fix = Fix(f"renumber [{name}] 1..{len(positions)}", True, _fix_renumber(name))
+            moved = tuple(_entry_line(found, p) for p in positions if p > gaps[0])
+            fix = Fix(f"renumber [{name}] 1..{len(positions)}", True, _fix_renumber(name), moved)
             missing = ", ".join(str(g) for g in gaps)
             yield ctx.report("EDS015", f"[{name}]: no entry {missing}", ctx.at(found), fix)
         for key in found.extra:
             if keys.normalize(key) != "supportedobjects" and not _reported(key):
                 message = f"[{name}] {key}: not a list position (1, 2, ... in decimal)"
                 yield ctx.report("EDS015", message, ctx.at(found, key))
+
+
+def _entry_line(found: ObjectList, position: int) -> int:
+    return (found.origin.where(str(position)) or (0,))[0] if found.origin is not None else 0
+
+
+def _repeats(ctx: Context, name: str, found: ObjectList) -> Iterator[Finding]:
+    if not found.repeats:
+        return
+    lines = tuple(line for entries in found.repeats.values() for line, _, _ in entries[1:])
+    fix = Fix(f"renumber the repeated entries of [{name}] into free numbers", True, _fix_repeats(name), lines)
+    for position, entries in sorted(found.repeats.items()):
+        first = entries[0][0]
+        for line, column, index in entries[1:]:
+            message = f"[{name}] {position}=0x{index:04X}: number {position} already given on line {first}"
+            yield ctx.report("EDS015", message, Location(file=ctx.device.source, line=line, column=column), fix)
+
+
+def _free_numbers(found: ObjectList) -> Iterator[int]:
+    taken = set(found.entries)
+    number = 1
+    while True:
+        if number not in taken:
+            yield number
+        number += 1
+
+
+def _fix_repeats(name: str) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        found = object_list(device, name)
+        if found is None or not found.repeats:
+            return  # applied already
+        free = _free_numbers(found)
+        for position, entries in sorted(found.repeats.items()):
+            found.entries[position] = entries[0][2]
+            for line, column, index in entries[1:]:
+                number = next(free)
+                found.entries[number] = index
+                respell(device, line, column, str(position), str(number))
+        found.entries = dict(sorted(found.entries.items()))
+        found.repeats.clear()
+
+    return apply
 
 
 def _reported(key: str) -> bool:

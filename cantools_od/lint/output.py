@@ -8,11 +8,14 @@ from typing import Any
 
 from .. import __version__
 from ..model import Severity
+from ..model.source import capped
 from .rules import RULES, Finding
 
 
 def text(findings: list[Finding], files: int) -> str:
-    lines = [finding.format() + _fix_note(finding) for finding in findings]
+    """gcc-style lines, at most a few per code and file (the rest counted), and a summary of all."""
+    shown, notes = capped(findings)
+    lines = [finding.format() + _fix_note(finding) for finding in shown] + notes
     counts = Counter(f.severity for f in findings)
     summary = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity if counts[s])
     lines.append(f"{files} file{'s' if files != 1 else ''} checked: {summary or 'no findings'}")

@@ -11,11 +11,8 @@ from collections.abc import Iterator
 
 from ..eds import keys
 from ..model import (
-    Commissioning,
     Device,
-    DeviceInfo,
     Dialect,
-    FileInfo,
     NodeIdExpr,
     Object,
     ObjectKind,
@@ -25,7 +22,7 @@ from ..model import (
     Variable,
 )
 from .rules import Context, Finding, rule
-from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO
+from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
 
 W, INFO = Severity.WARNING, Severity.INFO
 
@@ -399,7 +396,7 @@ python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key o
 )
 def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
     for _, label, var in _vars(ctx.device):
-        written = var.origin is not None and "PDOMapping" in var.origin.keys
+        written = var.origin is not None and var.origin.where("PDOMapping") is not None
         invalid = any(keys.normalize(k) == "pdomapping" for k in var.extra)  # the reader reported it
         if written and var.pdo_mapping is None and not invalid:
             message = f"{label} PDOMapping is empty; python-canopen fails on it"
@@ -468,21 +465,22 @@ def comment_characters(ctx: Context) -> Iterator[Finding]:
 @rule(
     "DIA018",
     W,
-    "Key spelled otherwise than CiA 306",
+    "Key or section name in another case than CiA 306",
     """
-CiA 306 key names are case-insensitive, but python-canopen looks keys up case-sensitively: a key
-written `NrOfRxPDO` or `Baudrate_500` is not found there, and the tool silently takes a default
-(no PDOs, no baud rate). Write keys as CiA 306 spells them.""",
+CiA 306 key and section names are case-insensitive, but python-canopen looks them up
+case-sensitively: a key written `NrOfRxPDO` or `Baudrate_500`, or a section `[deviceinfo]`, is not
+found there, and the tool silently takes a default (no PDOs, no baud rate). lely finds them.
+
+Warning: the file is right by CiA 306; one peer misreads it. Names that no peer finds (blanks,
+other letters) are EDS091.
+Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.""",
     ("[DeviceInfo]\nNrOfRxPDO=0"),
     fixed=("[DeviceInfo]\nNrOfRXPDO=0"),
 )
 def key_spelling(ctx: Context) -> Iterator[Finding]:
-    for section in ctx.device.sections():
-        if section.origin is None or not isinstance(section, (FileInfo, DeviceInfo, Commissioning, Variable)):
-            continue
-        for canonical, written in section.origin.spelled.items():
-            yield ctx.report(
-                "DIA018",
-                f"{written}: CiA 306 spells it {canonical}; python-canopen reads keys case-sensitively",
-                ctx.at(section, canonical),
-            )
+    for spelling in spellings(ctx):
+        if spelling.found_by_peers:
+            what = "section names" if spelling.header else "keys"
+            message = f"{spelling.written}: CiA 306 spells it {spelling.canonical}; "
+            message += f"python-canopen reads {what} case-sensitively"
+            yield ctx.report("DIA018", message, spelling.where, spelling.fix())

@@ -11,6 +11,27 @@ from .rules import Context, Fix, declare
 E, W = Severity.ERROR, Severity.WARNING
 
 declare(
+    "EDS000",
+    E,
+    "Not an EDS/DCF file",
+    """
+The file holds no device description: binary data (a NUL byte), nothing but blank space, text
+without a single `[section]` header, or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
+command refuses such a file with this one line and exit code 2, and never writes to it: a
+formatter that read it as an empty device would otherwise replace it with one.""",
+    "\x7fELF\x02\x01\x01\x00...",
+)
+declare(
+    "JSN001",
+    E,
+    "Not a cantools-od model",
+    """
+A file read as JSON (by its `.json` name or its leading `{`) is not a model that `dump --format json`
+or `convert -o x.json` wrote: it does not parse, or its fields are not the model's. Every command
+refuses it with this one line and exit code 2, and never writes to it.""",
+    '{"objects": 5}',
+)
+declare(
     "EDS002",
     W,
     "Duplicate section or key",
@@ -32,7 +53,11 @@ declare(
 A value (DefaultValue, ParameterValue, LowLimit, HighLimit, or a number in an info section)
 cannot be read as its data type: not a number, an invalid octal number, a formula other than
 `$NODEID` plus constants, hex digits that are not byte pairs, a REAL out of range. The text is
-kept as it is.""",
+kept as it is.
+
+Error: tools read another value or none. Warning for `DefaultValue=0` on a DOMAIN: CANopenNode's
+editors write it for an empty domain and CANopenNode reads it so; lely rejects it, python-canopen
+reads the byte 00h. Fix: none offered; write the value in its type's form (DOMAIN: hex byte pairs).""",
     ("[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=twelve\nPDOMapping=0"),
     fixed=(
         "[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=12\nPDOMapping=0"
@@ -142,7 +167,7 @@ def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:
         if var.origin is None:
             continue
         for key, field in _VALUE_KEYS.items():
-            where = var.origin.keys.get(key)
+            where = var.origin.where(key)
             value = getattr(var, field)
             if where is None or where[0] != diagnostic.location.line or not isinstance(value, NodeIdExpr):
                 continue

@@ -21,6 +21,8 @@ class Fix:
     message: str
     safe: bool
     apply: Callable[[Device], None] = field(compare=False, repr=False)
+    lines: tuple[int, ...] = ()
+    """Lines of the file the fix rewrites or removes besides the finding's own (lines it adds are not named)."""
 
 
 @dataclass(frozen=True)
@@ -39,6 +41,8 @@ class Finding:
 class LintOptions:
     can_fd: bool = False
     node_id: int | None = None
+    profile: str | None = None
+    """A target's extra rules to run too: "canopennode" (lint --profile, and gen -t canopennode)."""
 
     @property
     def max_pdo_bits(self) -> int:
@@ -66,6 +70,14 @@ class Context:
         if section is None or section.origin is None:
             return self.at(section)
         return section.origin.value(key)
+
+    def written_at(self, owner: Object, var: Variable, key: str) -> Location:
+        """Where `var`'s `key` is written: its own line, the [xxxxValue]/[xxxxName] entry that holds a
+        CompactSubObj value, or the owner's header for an entry the file implies without writing it."""
+        implicit = isinstance(var, SubObject) and var.implicit
+        if implicit and (var.origin is None or var.origin.where(key) is None):
+            return self.at(owner)
+        return self.value_at(var, key)
 
     def variables(self) -> Iterator[tuple[Object, int, Variable]]:
         """Every VAR object (sub-index 0) and every sub-object, with its owner."""

@@ -29,11 +29,12 @@ class Suppressions:
             if origin is None or not section.comments:
                 continue
             whole = _codes(section.comments.get("", []))
-            last = max([origin.line, *(where[0] for where in origin.keys.values())])
+            positions = list(origin.positions())
+            last = max([origin.line, *(where[0] for _, where in positions)])
             if whole:
                 for line in range(origin.line, last + 1):
                     self.by_line.setdefault(line, set()).update(whole)
-            for key, where in origin.keys.items():
+            for key, where in positions:
                 codes = _codes(section.comments.get(key, []))
                 if codes:
                     self.by_line.setdefault(where[0], set()).update(codes)

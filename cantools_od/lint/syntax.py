@@ -8,9 +8,11 @@ from __future__ import annotations
 import difflib
 import re
 from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
 
 from ..eds import keys
-from ..model import Device, Section, Severity
+from ..eds.preserve import canonical_section_name, respell
+from ..model import Device, Location, Section, Severity
 from .common import OBJECT_FIELDS, explicit_objects, explicit_vars, file_start, invalid, present, where
 from .rules import Context, Finding, Fix, declare, rule
 
@@ -262,3 +264,69 @@ def comment_lines(ctx: Context) -> Iterator[Finding]:
 def _fix_comment_count(device: Device) -> None:
     if device.comments is not None:
         device.comments.line_count = len(device.comments.lines)
+
+
+# ---- spellings -------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Spelling:
+    """A known key or section name written otherwise than CiA 306 spells it."""
+
+    written: str
+    canonical: str
+    where: Location  # the first character of the name as written
+    header: bool
+
+    @property
+    def found_by_peers(self) -> bool:
+        """Only the case differs: lely finds it (case-insensitive); python-canopen, case-sensitive, does not."""
+        return self.written.lower() == self.canonical.lower()
+
+    def fix(self) -> Fix:
+        what = "section" if self.header else "key"
+        return Fix(f"write the {what} as {self.canonical}", True, self._respell)
+
+    def _respell(self, device: Device) -> None:
+        respell(device, self.where.line, self.where.column, self.written, self.canonical)
+
+
+def spellings(ctx: Context) -> Iterator[Spelling]:
+    """Every known key and section name written otherwise than CiA 306 spells it, in model order."""
+    for section in ctx.device.sections():
+        origin = section.origin
+        if origin is None:
+            continue
+        for canonical, written in origin.spelled.items():
+            if canonical == "":  # the section's own name; its text starts after the "["
+                header = origin.header()
+                where = Location(file=header.file, line=header.line, column=header.column + 1)
+                yield Spelling(written, canonical_section_name(written), where, True)
+            else:
+                yield Spelling(written, canonical, origin.key(canonical), False)
+
+
+@rule(
+    "EDS091",
+    E,
+    "Key or section name that peers do not find",
+    """
+CiA 306 matches key and section names without regard to case, but not with blanks inside or
+letters changed: `Supported Objects=` is not SupportedObjects (CiA 306 §4.5.2), and the DCF
+section is spelled `[DeviceComissioning]` (one m, CiA 306 §5.3.1) even though the English word has
+two. cantools-od reads such a name as meant, but lely's dcfchk rejects it and python-canopen does
+not find it: a DCF's NodeID and baud rate, or an object list's count, are silently lost there.
+
+Error: a peer reading the file by the standard loses the entry. Case alone is DIA018.
+Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.
+Fixed: `SupportedObjects=3`, `[DeviceComissioning]`.""",
+    "[MandatoryObjects]\nSupported Objects=3\n1=0x1000\n2=0x1001\n3=0x1018",
+)
+def unfound_spelling(ctx: Context) -> Iterator[Finding]:
+    for spelling in spellings(ctx):
+        if not spelling.found_by_peers:
+            what = "section" if spelling.header else "key"
+            message = (
+                f"{spelling.written}: CiA 306 spells this {what} {spelling.canonical}; lely and python-canopen miss it"
+            )
+            yield ctx.report("EDS091", message, spelling.where, spelling.fix())

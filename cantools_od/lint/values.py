@@ -61,7 +61,7 @@ def entries(ctx: Context) -> Iterator[Entry]:
 
 
 def _at(ctx: Context, entry: Entry, key: str) -> Location:
-    return ctx.at(entry.owner) if entry.implicit else ctx.value_at(entry.var, key)
+    return ctx.written_at(entry.owner, entry.var, key)
 
 
 def node_ids(ctx: Context) -> tuple[int, ...]:

@@ -6,24 +6,51 @@ spend longer filling in defaults than the whole parse of a line takes.
 
 from __future__ import annotations
 
+from functools import cache
 from typing import Any, TypeVar
 
 from pydantic import BaseModel
 
 M = TypeVar("M", bound=BaseModel)
 
+_TEMPLATES: dict[tuple[type[BaseModel], int], tuple[dict[str, Any], dict[str, Any]]] = {}
+
 
 def assemble(cls: type[M], values: dict[str, Any], defaults: dict[str, Any]) -> M:
     """An instance of `cls` from `defaults` overlaid with `values`.
 
-    `defaults` must name every field (immutable values only, as they are shared).
+    `defaults` must name every field (immutable values only, as they are shared). Every field
+    counts as set (a reader gives each a value), and the instances of one class share that set:
+    a set per instance would cost more memory than the instance's values in a large file.
     """
     obj = cls.__new__(cls)
-    object.__setattr__(obj, "__dict__", {**defaults, **values})
-    object.__setattr__(obj, "__pydantic_fields_set__", set(values))
+    fields = _template(cls, defaults).copy()  # a copy of a key-sharing dict shares its keys too
+    fields.update(values)
+    object.__setattr__(obj, "__dict__", fields)
+    object.__setattr__(obj, "__pydantic_fields_set__", _all_fields(cls))
     object.__setattr__(obj, "__pydantic_extra__", None)
     object.__setattr__(obj, "__pydantic_private__", None)
     return obj
+
+
+def _template(cls: type[BaseModel], defaults: dict[str, Any]) -> dict[str, Any]:
+    """`defaults` as the attribute dict of an instance of `cls`, made by setting the attributes one by
+    one: CPython then shares the key table among the class's instances (PEP 412), which makes each
+    copy about half the size of a plain dict of the same fields."""
+    key = (cls, id(defaults))
+    found = _TEMPLATES.get(key)
+    if found is None or found[0] is not defaults:
+        instance = cls.__new__(cls)
+        for name, value in defaults.items():
+            object.__setattr__(instance, name, value)
+        found = _TEMPLATES[key] = (defaults, instance.__dict__)  # keeps `defaults`, so its id stays its own
+    return found[1]
+
+
+@cache
+def _all_fields(cls: type[BaseModel]) -> set[str]:
+    # Shared: pydantic adds a field's name on assignment, which changes nothing here.
+    return set(cls.model_fields)
 
 
 def field_defaults(cls: type[BaseModel]) -> dict[str, Any]:

@@ -75,6 +75,14 @@ class ObjectList(Section):
     supported_objects: int | None = None
     entries: dict[int, int] = Field(default_factory=dict)
     """Position (1..n) → object index."""
+    # Where the file writes a position more than once: position → (line, key column, object index) of
+    # each of its entries in file order (`entries` holds the last one, as for any repeated key).
+    # Source layout, not data: kept out of the schema and the content.
+    _repeats: dict[int, list[tuple[int, int, int]]] = PrivateAttr(default_factory=dict)
+
+    @property
+    def repeats(self) -> dict[int, list[tuple[int, int, int]]]:
+        return self._repeats
 
 
 class Commissioning(Section):
@@ -132,6 +140,9 @@ class Device(BaseModel):
     # Set by a lint fix: the preserving writer then also rewrites counts the model derives
     # (NrOfEntries of [xxxxName]/[xxxxValue]/[xxxxDenotation], ObjectLinks) where the file has them wrong.
     _recount: bool = PrivateAttr(default=False)
+    # Set by a lint fix: names and list numbers to write otherwise, as text edits of the original
+    # (line → column, as written, new spelling); the file read back then says what the fixed model says.
+    _respell: dict[int, tuple[int, str, str]] = PrivateAttr(default_factory=dict)
 
     def resolve(self, value: Value | None, node_id: int | None = None) -> Value | None:
         """A value with `$NODEID` replaced by the given or commissioned node-ID."""

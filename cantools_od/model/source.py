@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator
 from enum import StrEnum
+from typing import Protocol, TypeVar
 
 from pydantic import BaseModel, ConfigDict
 
@@ -29,7 +31,9 @@ class Location(BaseModel):
 class Origin(BaseModel):
     """Where a section came from: its header and each key.
 
-    `keys` maps the canonical key name to (line, key column, value column).
+    A key's position is (line, key column, value column). Readers give it in `keys`, or, more
+    compactly, in `layout` relative to the header line: sections written alike share one layout.
+    Look positions up with `where`, `positions`, `key` and `value` rather than in either mapping.
     """
 
     model_config = ConfigDict(defer_build=True)
@@ -38,21 +42,42 @@ class Origin(BaseModel):
     line: int = 0
     column: int = 1
     keys: dict[str, tuple[int, int, int]] = {}
+    """Canonical key name → (line, key column, value column)."""
+    layout: dict[str, tuple[int, int, int]] = {}
+    """Canonical key name → (lines after the header, key column, value column); shared, never edit it."""
     spelled: dict[str, str] = {}
-    """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written."""
+    """Known keys written otherwise than CiA 306 spells them (`NrOfRxPDO`): canonical name → as written;
+    under "" the section's own name when written otherwise (`DeviceCommissioning`)."""
 
     def header(self) -> Location:
         return Location(file=self.file, line=self.line, column=self.column)
 
+    def where(self, name: str) -> tuple[int, int, int] | None:
+        """The key's (line, key column, value column), None when the section has no such key."""
+        where = self.keys.get(name)
+        if where is not None:
+            return where
+        relative = self.layout.get(name)
+        if relative is None:
+            return None
+        return (self.line + relative[0], relative[1], relative[2])
+
+    def positions(self) -> Iterator[tuple[str, tuple[int, int, int]]]:
+        """Every key with its (line, key column, value column)."""
+        yield from self.keys.items()
+        for name, (offset, key_column, value_column) in self.layout.items():
+            if name not in self.keys:
+                yield name, (self.line + offset, key_column, value_column)
+
     def key(self, name: str) -> Location:
         """The key's line, or the section header when the key is absent."""
-        where = self.keys.get(name)
+        where = self.where(name)
         if where is None:
             return self.header()
         return Location(file=self.file, line=where[0], column=where[1])
 
     def value(self, name: str) -> Location:
-        where = self.keys.get(name)
+        where = self.where(name)
         if where is None:
             return self.header()
         return Location(file=self.file, line=where[0], column=where[2])
@@ -70,3 +95,38 @@ class Diagnostic(BaseModel):
 
     def format(self) -> str:
         return f"{self.location}: {self.severity.value}: {self.message} [{self.code}]"
+
+
+class Reported(Protocol):
+    """A diagnostic or a lint finding: what `capped` needs of one."""
+
+    @property
+    def code(self) -> str: ...
+
+    @property
+    def location(self) -> Location: ...
+
+
+R = TypeVar("R", bound=Reported)
+
+REPEAT_LIMIT = 10
+"""Findings of one code in one file shown before the rest are summed up in one line."""
+
+
+def capped(items: Iterable[R], limit: int = REPEAT_LIMIT) -> tuple[list[R], list[str]]:
+    """The items to show, at most `limit` per code and file, and one line for each group cut short.
+
+    A file of garbage yields thousands of findings of one kind; after the first few, a count says more."""
+    groups: dict[tuple[str, str], int] = {}
+    shown: list[R] = []
+    for item in items:
+        key = (item.location.file, item.code)
+        groups[key] = groups.get(key, 0) + 1
+        if groups[key] <= limit:
+            shown.append(item)
+    notes = [
+        f"{file or '<input>'}: note: {count - limit} more {code} finding{'s' if count - limit != 1 else ''} not shown"
+        for (file, code), count in groups.items()
+        if count > limit
+    ]
+    return shown, notes

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from ..model import AccessType, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
-from . import environment
+from . import render_template
 from .c_pdo import CPdo, Helpers, c_pdos
 from .c_types import Storage, constant, storage, utf16_units
 
@@ -290,8 +290,7 @@ def context(view: DeviceView) -> Context:
 def render(view: DeviceView) -> dict[str, str]:
     """NAME.h and NAME.c."""
     ctx = context(view)
-    env = environment()
     return {
-        f"{view.name}.h": env.get_template("c/header.h.j2").render(c=ctx),
-        f"{view.name}.c": env.get_template("c/source.c.j2").render(c=ctx),
+        f"{view.name}.h": render_template("c/header.h.j2", c=ctx),
+        f"{view.name}.c": render_template("c/source.c.j2", c=ctx),
     }

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from ..model import ValueKind
 from ..views.codegen import DeviceView, PdoEntryView, PdoView
 from .c_types import Constant, constant, int_range, limit_value, real_literal, scalar_type, storage_bits, typed_integer
+from .prose import count
 
 
 @dataclass(frozen=True)
@@ -208,5 +209,5 @@ def _title(pdo: PdoView) -> str:
     tt = "?" if p.transmission_type is None else str(p.transmission_type)
     return (
         f"{p.name} ({p.comm_index:04X}/{p.map_index:04X}): COB-ID {cob}, transmission type {tt}, "
-        f"{p.bit_length} bits in {pdo.byte_length} bytes"
+        f"{count(p.bit_length, 'bit')} in {count(pdo.byte_length, 'byte')}"
     )

@@ -44,6 +44,12 @@ def line_comment(text: str) -> str:
     return _ascii(_one_line(text)).replace("??", "? ?")
 
 
+def rust_doc(text: str) -> str:
+    """For after /// or //!: one ASCII line that rustdoc's Markdown shows as written (no link, HTML
+    tag, emphasis or code span of its own, and no bare URL for rustdoc to warn about)."""
+    return markdown_text(line_comment(text))
+
+
 def rust_string(text: str) -> str:
     out = []
     for char in text:
@@ -87,6 +93,11 @@ def markdown_text(text: str) -> str:
     table never splits a cell at it.
     """
     return _MARKDOWN_SPECIAL.sub(_markdown_escape, _one_line(text))
+
+
+def markdown_plain(text: str) -> str:
+    """The text `markdown_text(text)` renders to."""
+    return _one_line(text)
 
 
 def markdown_cell(text: str) -> str:

@@ -4,43 +4,53 @@ The document is CommonMark with GFM tables and no raw HTML. Every text taken fro
 through `escape.markdown_text`/`markdown_cell` and renders literally; everything else in it is made
 here from numbers, identifiers and fixed words.
 
-Anchors: each object's section is headed ``Object XXXXh`` (upper-case hex index), whose GFM anchor
-is ``#object-xxxxh``; each PDO's section is headed with its name (``#rpdo1``, ``#tpdo1``). They depend
-on indices and PDO numbers only, so links into the document survive renamed objects. The title,
-``Object dictionary: <product>``, is the only heading with file text; its anchor starts with
-``object-dictionary-`` and so cannot take one of the others.
+Anchors: each object's section is headed ``Object XXXXh: <name>`` (upper-case hex index), whose GFM
+anchor is ``#object-xxxxh-<name as GitHub spells it in an anchor>``, made here the way GitHub makes it so
+that every link in the document reaches its heading; each PDO's section is headed with its name
+(``#rpdo1``, ``#tpdo1``). The title, ``Object dictionary: <product>``, has the anchor
+``object-dictionary-...`` and so cannot take one of the others.
 """
 
 from __future__ import annotations
 
+import unicodedata
 from pathlib import Path
 
 from ..model import DataType, Device, NodeIdExpr, Object, RawValue, TimeValue, ValueKind, Variable
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import environment
-from .escape import markdown_cell, markdown_text
+from . import render_template
+from .escape import markdown_cell, markdown_plain, markdown_text
+from .prose import count
 
 NONE = "\u2014"
 VALID_BIT = 0x80000000
 
 
 def render(view: DeviceView) -> dict[str, str]:
-    text = environment().get_template("markdown/reference.md.j2").render(d=_document(view))
+    text = render_template("markdown/reference.md.j2", d=_document(view))
     return {f"{view.name}.md": text}
 
 
-def anchor(index: int) -> str:
-    return f"object-{index:04x}h"
+def heading(index: int, name: str) -> str:
+    """The text of an object's section heading (Markdown)."""
+    shown = markdown_text(name)
+    return f"Object {index:04X}h: {shown}" if shown else f"Object {index:04X}h"
 
 
-def link(index: int) -> str:
-    return f"[{index:04X}h](#{anchor(index)})"
+def anchor(index: int, name: str) -> str:
+    """GitHub's anchor of the heading: lower case; letters, digits, marks, `_` and `-` kept; blanks to `-`."""
+    text = f"Object {index:04X}h: {markdown_plain(name)}".lower()
+    return "".join("-" if c in " -" else c for c in text if c in " -_" or unicodedata.category(c)[0] in "LNM")
 
 
-def _link_if(view: DeviceView, index: int) -> str:
+def _anchors(view: DeviceView) -> dict[int, str]:
+    return {obj.index: anchor(obj.index, obj.name) for obj in view.objects}
+
+
+def link(index: int, anchors: dict[int, str]) -> str:
     """A link to the object when the document has its section, else its index marked absent."""
-    present = any(obj.index == index for obj in view.objects)
-    return link(index) if present else f"{index:04X}h (absent)"
+    target = anchors.get(index)
+    return f"[{index:04X}h](#{target})" if target is not None else f"{index:04X}h (absent)"
 
 
 def _source(view: DeviceView) -> str:
@@ -50,13 +60,14 @@ def _source(view: DeviceView) -> str:
 def _document(view: DeviceView) -> dict[str, object]:
     device = view.device
     mapped = _mapped(view)
+    anchors = _anchors(view)
     return {
         "title": markdown_text(device.device_info.product_name or view.name) or markdown_text(view.name),
         "source": markdown_text(_source(view)),
         "summary": _summary(view),
-        "pdos": [_pdo(view, pdo) for pdo in view.pdos],
-        "pdo_rows": [_pdo_row(view, pdo) for pdo in view.pdos],
-        "object_rows": [_object_row(view, obj, mapped) for obj in view.objects],
+        "pdos": [_pdo(pdo, anchors) for pdo in view.pdos],
+        "pdo_rows": [_pdo_row(pdo, anchors) for pdo in view.pdos],
+        "object_rows": [_object_row(view, obj, mapped, anchors) for obj in view.objects],
         "objects": [_object(view, obj, mapped) for obj in view.objects],
     }
 
@@ -113,25 +124,25 @@ def _cob_id(pdo: PdoView) -> str:
     return text + (" (not valid)" if value & VALID_BIT else "")
 
 
-def _pdo_row(view: DeviceView, pdo: PdoView) -> list[str]:
+def _pdo_row(pdo: PdoView, anchors: dict[int, str]) -> list[str]:
     p = pdo.pdo
     return [
         f"[{p.name}](#{pdo.struct_name})",
         _cob_id(pdo),
         str(p.transmission_type) if p.transmission_type is not None else NONE,
-        _link_if(view, p.comm_index),
-        _link_if(view, p.map_index),
+        link(p.comm_index, anchors),
+        link(p.map_index, anchors),
         str(p.bit_length),
         str(len(p.entries)),
     ]
 
 
-def _pdo(view: DeviceView, pdo: PdoView) -> dict[str, object]:
+def _pdo(pdo: PdoView, anchors: dict[int, str]) -> dict[str, object]:
     p = pdo.pdo
     transmission = f"transmission type {p.transmission_type}" if p.transmission_type is not None else "no type"
     summary = (
-        f"COB-ID {_cob_id(pdo)}, {transmission}, {p.bit_length} bits ({pdo.byte_length} bytes). "
-        f"Communication parameters {_link_if(view, p.comm_index)}, mapping {_link_if(view, p.map_index)}."
+        f"COB-ID {_cob_id(pdo)}, {transmission}, {count(p.bit_length, 'bit')} ({count(pdo.byte_length, 'byte')}). "
+        f"Communication parameters {link(p.comm_index, anchors)}, mapping {link(p.map_index, anchors)}."
     )
     entries: list[list[str]] = []
     for number, entry in enumerate(pdo.entries, 1):
@@ -142,7 +153,7 @@ def _pdo(view: DeviceView, pdo: PdoView) -> dict[str, object]:
             entries[-1] += [type_name, NONE]
             continue
         target = entry.entry
-        where = link(target.index) + (f" sub {target.subindex:X}h" if target.member is not None else "")
+        where = link(target.index, anchors) + (f" sub {target.subindex:X}h" if target.member is not None else "")
         entries.append([str(number), f"{entry.bit_offset}..{last}", str(entry.bit_length), where])
         entries[-1] += [markdown_cell(target.name), type_name, f"`{target.flat}`"]
     return {
@@ -256,7 +267,9 @@ def _where(view: DeviceView, entry: EntryView) -> str:
     return markdown_text(f"{file}:{origin.line}") + (" (compact)" if entry.implicit else "")
 
 
-def _object_row(view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], list[str]]) -> list[str]:
+def _object_row(
+    view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], list[str]], anchors: dict[int, str]
+) -> list[str]:
     first = obj.entries[0] if obj.entries else None
     name = markdown_cell(obj.name)
     if obj.is_var and first is not None:
@@ -267,18 +280,18 @@ def _object_row(view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int],
         pdos = [name for e in obj.entries for name in mapped.get((e.index, e.subindex), [])]
         mappable = "mappable" if any(e.pdo_mappable for e in obj.entries) else "no"
         cells = [NONE, NONE, ", ".join(dict.fromkeys(pdos)) or mappable, NONE, NONE]
-        kind = f"{obj.kind.name}, {len(obj.entries)} sub-objects"
+        kind = f"{obj.kind.name}, {count(len(obj.entries), 'sub-object')}"
     source = _where(view, first) if first is not None else NONE
     if not obj.is_var:
         header = view.device.objects[obj.index].origin
         source = markdown_text(f"{_source(view)}:{header.line}") if header is not None and header.line else NONE
-    return [link(obj.index), name, kind, *cells, source]
+    return [link(obj.index, anchors), name, kind, *cells, source]
 
 
 def _object(view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], list[str]]) -> dict[str, object]:
     header = view.device.objects[obj.index].origin
     where = f"{_source(view)}:{header.line}" if header is not None and header.line else ""
-    kind = obj.kind.name if obj.is_var else f"{obj.kind.name} with {len(obj.entries)} sub-objects"
+    kind = obj.kind.name if obj.is_var else f"{obj.kind.name} with {count(len(obj.entries), 'sub-object')}"
     summary = f"{markdown_text(obj.name) or NONE}: {kind}, identifier `{obj.identifier}`"
     summary += f", described at {markdown_text(where)}." if where else "."
     rows = []
@@ -296,4 +309,4 @@ def _object(view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], lis
                 _where(view, entry),
             ]
         )
-    return {"index": f"{obj.index:04X}h", "summary": summary, "rows": rows}
+    return {"heading": heading(obj.index, obj.name), "summary": summary, "rows": rows}

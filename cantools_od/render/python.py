@@ -20,7 +20,8 @@ from importlib import resources
 from ..interop import OdVariable, od_objects
 from ..model import AccessType, Device, NodeIdExpr, ValueKind, standard_type
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import environment
+from . import render_template
+from .prose import count
 from .py_text import (
     doc_text,
     docstring,
@@ -89,7 +90,7 @@ def runtime() -> str:
 
 
 def render(view: DeviceView) -> dict[str, str]:
-    text = environment().get_template("python/module.py.j2").render(m=_module(view), runtime=runtime())
+    text = render_template("python/module.py.j2", m=_module(view), runtime=runtime())
     return {f"{view.name}.py": text}
 
 
@@ -259,7 +260,7 @@ def _pdo(view: DeviceView, pdo: PdoView) -> dict[str, object]:
         )
     return {
         "class_name": pdo.struct_name.capitalize(),
-        "summary": doc_text(f"{pdo.pdo.name}: {pdo.byte_length} bytes, COB-ID {cob_text}."),
+        "summary": doc_text(f"{pdo.pdo.name}: {count(pdo.byte_length, 'byte')}, COB-ID {cob_text}."),
         "doc": wrap(doc or ["No entries mapped."], 4),
         "comm_index": py_hex(pdo.pdo.comm_index),
         "map_index": py_hex(pdo.pdo.map_index),
@@ -308,7 +309,7 @@ def _group_class(obj: ObjectView) -> str:
 def _object_property(obj: ObjectView) -> Property:
     if obj.is_var:
         return _property(obj.entries[0], obj.identifier, f"{obj.index:04X}h", 8)
-    summary = f"{obj.index:04X}h {obj.name}: {obj.kind.name} of {len(obj.entries)} sub-objects."
+    summary = f"{obj.index:04X}h {obj.name}: {obj.kind.name} of {count(len(obj.entries), 'sub-object')}."
     return Property(
         name=obj.identifier,
         pytype=_group_class(obj),

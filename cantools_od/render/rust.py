@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from ..model import STANDARD_TYPES, NodeIdExpr, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
-from . import environment, escape, rust_layout
+from . import escape, render_template, rust_layout
 from .rust_names import TypeNames, lower, upper
 from .rust_pdo import RustPdo, pdos
 from .rust_types import byte_string, in_type_range, node_expr, rust_type, scalar_literal, zero
@@ -245,8 +245,8 @@ def render(view: DeviceView) -> dict[str, str]:
     """`<name>.rs` for the view."""
     context = module(view)
     source = view.source_name
-    template = environment().get_template("rust/module.rs.j2")
-    text = template.render(
+    text = render_template(
+        "rust/module.rs.j2",
         m=context,
         source=source,
         product=view.device.device_info.product_name or "",

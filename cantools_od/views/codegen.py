@@ -147,6 +147,7 @@ class DeviceView:
     node_id: int | None  # the one given, else the DCF's NodeID
     problems: tuple[Diagnostic, ...] = field(default=())
     max_pdo_bits: int = CLASSIC_CAN_BITS  # the frame limit PDOs were checked against (512 with CAN FD)
+    failed_pdos: frozenset[str] = frozenset()  # names of the PDOs that `problems` are about
 
     @property
     def source_name(self) -> str:
@@ -182,7 +183,7 @@ def _entry(device: Device, ids: Identifiers, obj: Object, subindex: int, var: Va
         low_limit=_number(var.low_limit),
         high_limit=_number(var.high_limit),
         implicit=getattr(var, "implicit", False),
-        line=origin.keys.get("ParameterName", (origin.line,))[0] if origin else 0,
+        line=origin.key("ParameterName").line if origin else 0,
     )
 
 
@@ -210,6 +211,7 @@ def build_view(
             by_key[(entry.index, entry.subindex)] = entry
         objects.append(ObjectView(obj.index, obj.name, ids.object(obj.index), obj.kind, entries))
     problems: list[Diagnostic] = []
+    failed: set[str] = set()
     pdos: list[PdoView] = []
     for pdo in pdo_map(device, node_id, ids):
         view_entries = []
@@ -218,6 +220,7 @@ def build_view(
             problem = _pdo_problem(pdo, mapped.index, mapped.subindex, mapped.bit_length, target, mapped.is_dummy)
             if problem:
                 problems.append(_diagnostic(device, pdo, problem))
+                failed.add(pdo.name)
             view_entries.append(PdoEntryView(target, mapped.bit_offset, mapped.bit_length, mapped.data_type))
         if pdo.count_invalid:
             problems.append(_diagnostic(device, pdo, f"{pdo.name}: its mapping counts {pdo.count} entries, at most 64"))
@@ -225,9 +228,12 @@ def build_view(
             problems.append(
                 _diagnostic(device, pdo, f"{pdo.name}: its {pdo.bit_length} bits exceed the {max_pdo_bits}-bit frame")
             )
+            failed.add(pdo.name)
         pdos.append(PdoView(pdo, tuple(view_entries)))
     resolved = node_id if node_id is not None else device.node_id  # given, else the DCF's own
-    return DeviceView(name, device, ids, tuple(objects), tuple(pdos), resolved, tuple(problems), max_pdo_bits)
+    return DeviceView(
+        name, device, ids, tuple(objects), tuple(pdos), resolved, tuple(problems), max_pdo_bits, frozenset(failed)
+    )
 
 
 def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryView | None, dummy: bool) -> str:

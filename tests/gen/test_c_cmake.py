@@ -44,10 +44,11 @@ def bump(path: Path, old: str, new: str, newer_than: Path) -> None:
 
 
 def assert_nothing_to_do(output: str, generator: str) -> None:
+    # Only the check for a changed pin file runs (it may appear at any time, so it runs every build).
     if generator == "Ninja":
-        assert "no work to do" in output, output
+        assert "no work to do" in output or output.count("\n") <= 1, output
     assert "Generating" not in output, output
-    assert "Building C object" not in output, output
+    assert "Building C object" not in output and "Linking" not in output, output
 
 
 @pytest.mark.parametrize("generator", sorted(GENERATORS))
@@ -78,11 +79,10 @@ def test_example_firmware_builds_runs_and_tracks_the_eds(tmp_path: Path, generat
     assert "heartbeat 750 ms" in run([str(build / "firmware")], tmp_path)
     assert_nothing_to_do(run(["cmake", "--build", str(build)], tmp_path), generator)
 
-    # A pin file beside the EDS counts from the next generation on (the depfile names it).
+    # A pin file created beside the EDS counts at once.
     pins = project / "eds" / "cia402_drive.ids.toml"
     pins.write_text('[identifiers]\n"6502" = "drive_modes"\n', encoding="utf-8")
-    bump(eds, "DefaultValue=750", "DefaultValue=800", header)
-    run(["cmake", "--build", str(build)], tmp_path)
+    assert "Generating drive.h" in run(["cmake", "--build", str(build)], tmp_path)
     assert "DRIVE_DRIVE_MODES_INDEX" in header.read_text("utf-8")
     bump(pins, "drive_modes", "supported_modes", header)
     assert "Generating drive.h" in run(["cmake", "--build", str(build)], tmp_path)

@@ -26,9 +26,11 @@ from pykit import (
     run_gen,
     tables,
     var,
+    view_of,
     walk,
 )
 
+from cantools_od.render import renderer
 from cantools_od.render.escape import markdown_cell, markdown_text
 
 from support import EXAMPLES, assert_golden
@@ -148,19 +150,36 @@ def test_hostile_text_renders_literally(tmp_path: Path) -> None:
     assert [row[4] for row in tpdo1[1:]] == HOSTILE[:2]
 
 
-def test_anchors_depend_on_indices_only(tmp_path: Path) -> None:
+def test_object_headings_carry_names_and_every_link_reaches_its_heading(tmp_path: Path) -> None:
     path = tmp_path / "odd_bits.eds"
     path.write_text(odd_bits_eds(), encoding="ascii")
     before = headings(markdown_tokens(generate(path, "markdown", "odd_bits")))
+    assert "Object 2100h: Odd values" in before
     path.write_text(odd_bits_eds().replace("Odd values", "Renamed: odd *values*"), encoding="ascii")
     after_text = generate(path, "markdown", "odd_bits")
     after = headings(check_markdown(after_text))
+    assert "Object 2100h: Renamed: odd *values*" in after  # the name as written, not as Markdown
     slugs = [github_slug(h) for h in after]
-    assert slugs[1:] == [github_slug(h) for h in before][1:]
-    assert "object-2100h" in slugs and "tpdo4" in slugs and "rpdo2" in slugs
+    changed = [(b, a) for b, a in zip(before, after, strict=True) if b != a]
+    assert changed == [("Object 2100h: Odd values", "Object 2100h: Renamed: odd *values*")]
+    assert "object-2100h-renamed-odd-values" in slugs and "tpdo4" in slugs and "rpdo2" in slugs
     objects = [s for s in slugs[1:] if s.startswith("object-") and s != "object-details"]
-    assert objects and all(re.fullmatch(r"object-[0-9a-f]{4}h", s) for s in objects)
+    assert objects and all(re.match(r"object-[0-9a-f]{4}h(-|$)", s) for s in objects)
     assert set(LINK.findall(after_text)) <= set(slugs)
+    assert "](#object-2100h-renamed-odd-values)" in after_text
+
+
+def test_counts_in_prose_are_singular_for_one(tmp_path: Path) -> None:
+    path = tmp_path / "single.eds"
+    objects = [var(0x2000, "Flag", 0x0001, "rw", "0"), record(0x2001, "Empty", [])]
+    objects.append(pdo("tx", 1, [(0x2000, 0, 1)]))
+    path.write_text(eds_text(objects), encoding="utf-8")
+    text = generate(path, "markdown", "single")
+    assert "1 bit (1 byte)" in text and "RECORD with 1 sub-object," in text and "RECORD, 1 sub-object |" in text
+    for target in ("markdown", "c", "rust", "python"):
+        generated = "".join(renderer(target)(view_of(path, "single")).values())
+        assert not re.search(r"\b1 (bits|bytes|sub-objects)\b", generated), target
+        assert re.search(r"\b1 (bit|byte)\b", generated), target
 
 
 def test_odd_bits_layout_table(tmp_path: Path) -> None:

@@ -1,6 +1,7 @@
-"""Every real file of ../shared/eds-corpus through `cantools-od gen -t python -t markdown`, in-process: an importable
-module whose `object_dictionary()` equals `to_canopen`, and a valid Markdown document naming every object; or a
-refusal with exit code 1 and a GEN001 diagnostic. Never a traceback."""
+"""Every real file of ../shared/eds-corpus through `cantools-od gen -t python -t markdown --keep-going`, in-process:
+an importable module whose `object_dictionary()` equals `to_canopen` of what errors did not leave out, and a valid
+Markdown document naming every object generated; or, for a file that is no device description, a refusal with
+exit code 2 (EDS000). Never a traceback."""
 
 from __future__ import annotations
 
@@ -13,6 +14,9 @@ import pytest
 from pykit import check_markdown, check_markdown_lines, import_file, run_gen
 
 from cantools_od import load, to_canopen
+from cantools_od.eds.where import damaged_objects
+from cantools_od.render.escape import markdown_text
+from cantools_od.views.partial import without
 
 from support import corpus_files
 
@@ -28,17 +32,18 @@ def _od(od: Any) -> dict[tuple[int, int], tuple[Any, ...]]:
 
 
 def _sweep(path: Path, folder: Path, parse: bool) -> str:
-    """'generated', 'generated with errors' or 'refused'; raises AssertionError on anything else."""
-    result = run_gen(path, "-t", "python", "-t", "markdown", "-o", folder, "--name", "generated")
+    """'generated', 'generated in part' or 'refused'; raises AssertionError on anything else."""
+    result = run_gen(path, "-t", "python", "-t", "markdown", "-o", folder, "--name", "generated", "--keep-going")
     assert result.exception is None or isinstance(result.exception, SystemExit), result.exc_info
     assert "Traceback" not in result.output
     module_file, document = folder / "generated.py", folder / "generated.md"
     if not module_file.exists():
-        assert result.exit_code == 1 and "GEN001" in result.output, result.output
+        assert result.exit_code == 2 and "[EDS000]" in result.output, result.output
         assert not document.exists()
         return "refused"
-    assert result.exit_code in (0, 1), result.output
-    device = load(path)
+    assert result.exit_code == 0, result.output
+    whole = load(path)
+    device = without(whole, set(damaged_objects(whole)))
     module = import_file(module_file)
     assert _od(module.object_dictionary()) == _od(to_canopen(device, device.node_id))
     for name, cls in vars(module).items():
@@ -53,9 +58,11 @@ def _sweep(path: Path, folder: Path, parse: bool) -> str:
         check_markdown_lines(text)
     indices = {index for index, obj in device.objects.items() if obj.kind.name not in ("NULL", "DEFTYPE")}
     for index in indices:
-        assert f"\n### Object {index:04X}h\n" in text and f"](#object-{index:04x}h)" in text
+        shown = markdown_text(device.objects[index].name)
+        heading = f"### Object {index:04X}h: {shown}\n" if shown else f"### Object {index:04X}h\n"
+        assert f"\n{heading}" in text and f"](#object-{index:04x}h" in text
         assert hasattr(module, f"INDEX_{module_identifier(module, index)}")
-    return "generated" if result.exit_code == 0 else "generated with errors"
+    return "generated in part" if device is not whole else "generated"
 
 
 def module_identifier(module: Any, index: int) -> str:
@@ -83,4 +90,4 @@ def test_corpus_sweep(tmp_path: Path) -> None:
     summary = ", ".join(f"{count} {outcome}" for outcome, count in sorted(counts.items()))
     print(f"\ncorpus: {len(files)} files in {elapsed:.1f} s: {summary}, {len(failures)} failed")
     assert not failures, "\n".join(failures)
-    assert counts.get("generated", 0) + counts.get("generated with errors", 0) >= len(files) // 2
+    assert counts.get("generated", 0) + counts.get("generated in part", 0) >= len(files) - 1

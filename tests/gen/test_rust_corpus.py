@@ -1,6 +1,7 @@
-"""Every real EDS/DCF of ../shared/eds-corpus: `cantools-od gen -t rust` either writes a module that compiles
-with `rustc -D warnings` (all modules in one crate, compiled once), is clippy- and rustfmt-clean, or
-refuses with exit code 1 and a GEN001 diagnostic. Never a traceback."""
+"""Every real EDS/DCF of ../shared/eds-corpus: `cantools-od gen -t rust --keep-going` either writes a module
+that compiles with `rustc -D warnings` (all modules in one crate, compiled once), is clippy- and
+rustfmt-clean, or, for a file that is no device description, refuses with exit code 2 (EDS000). Never a
+traceback."""
 
 from __future__ import annotations
 
@@ -39,7 +40,7 @@ def sweep(tmp_path_factory: pytest.TempPathFactory) -> Sweep:
         while module in result.generated:
             module += "_2"
         started = time.perf_counter()
-        outcome = runner.invoke(command, [str(path), "-t", "rust", "-o", str(src), "--name", module])
+        outcome = runner.invoke(command, [str(path), "-t", "rust", "-o", str(src), "--name", module, "--keep-going"])
         elapsed = time.perf_counter() - started
         result.slowest = max(result.slowest, (elapsed, path.name))
         written = (src / f"{module}.rs").is_file()
@@ -47,7 +48,7 @@ def sweep(tmp_path_factory: pytest.TempPathFactory) -> Sweep:
             result.failures.append(f"{path.name}: {outcome.exception!r}")
         elif written:
             result.generated[module] = path
-        elif outcome.exit_code == 1 and "GEN001" in outcome.stderr:
+        elif outcome.exit_code == 2 and "[EDS000]" in outcome.stderr:
             result.refused.append(path)
         else:
             result.failures.append(f"{path.name}: exit {outcome.exit_code} without output: {outcome.stderr[-500:]}")
@@ -55,14 +56,14 @@ def sweep(tmp_path_factory: pytest.TempPathFactory) -> Sweep:
     (src / "lib.rs").write_text(lib, encoding="utf-8")
     print(
         f"\nRust corpus sweep: {len(files)} files, {len(result.generated)} generated, {len(result.refused)} refused "
-        f"(GEN001); slowest {result.slowest[1]} in {result.slowest[0]:.2f} s"
+        f"(EDS000); slowest {result.slowest[1]} in {result.slowest[0]:.2f} s"
     )
     return result
 
 
 def test_every_file_is_generated_or_refused(sweep: Sweep) -> None:
     assert not sweep.failures, "\n".join(sweep.failures)
-    assert len(sweep.generated) > len(sweep.refused) > 0
+    assert len(sweep.generated) > len(sweep.refused)
 
 
 def test_corpus_compiles_without_warnings(sweep: Sweep) -> None:

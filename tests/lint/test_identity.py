@@ -67,7 +67,7 @@ def test_identity_clean(text: str) -> None:
 def test_serial_number() -> None:
     dcf = "[DeviceComissioning]\nNodeID=5\nLSS_SerialNumber=0x17\n\n[1018]\nParameterName=Identity\nObjectType=0x9\n"
     assert findings(dcf + SUB4 + "ParameterValue=0x18\n", "EDS045", "t.dcf") == [(3, 18)]
-    assert findings(dcf + SUB4 + "DefaultValue=0x18\n", "EDS045", "t.dcf") == [(3, 18)]
+    assert findings(dcf + SUB4 + "DefaultValue=0x18\n", "EDS045", "t.dcf") == []  # the EDS default, not this device
     assert findings(dcf + SUB4 + "ParameterValue=0x17\n", "EDS045", "t.dcf") == []
     assert findings(dcf + SUB4 + "DefaultValue=0\n", "EDS045", "t.dcf") == []  # not configured
     assert findings(dcf.replace("0x17", "0") + SUB4 + "DefaultValue=5\n", "EDS045", "t.dcf") == []

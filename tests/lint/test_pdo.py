@@ -215,7 +215,8 @@ def test_pdo045_fix_rewrites_a_compact_value_section() -> None:
     ).replace("[DeviceInfo]", "[DeviceComissioning]\nNodeID=2\n\n[DeviceInfo]")
     device = load(text, "t.dcf")
     (found,) = [f for f in lint(device) if f.code == "PDO045"]
-    assert at(found) == (where(text, "1A00"), 1)  # no section of its own: the owner
+    # no section of its own: the [1A00Value] entry that holds the value, at the value
+    assert at(found) == (text.splitlines().index("1=0x60410008") + 1, 3)
     assert found.fix is not None and found.fix.safe
     found.fix.apply(device)
     assert dumps(device, "dcf").decode() == text.replace("1=0x60410008", "1=0x60410010")

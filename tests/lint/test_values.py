@@ -30,7 +30,7 @@ FOUND = [
     ("EDS034", var("0x000C", "DefaultValue=1 86400000"), "t.eds", None, [(5, 14)]),
     ("EDS034", NODE + var("0x0005", "ParameterValue=256"), "t.dcf", None, [(7, 16)]),
     ("EDS034", compact("DefaultValue=300"), "t.dcf", None, [(9, 14)]),
-    ("EDS034", compact(values="2=256"), "t.dcf", None, [(3, 1)]),
+    ("EDS034", compact(values="2=256"), "t.dcf", None, [(11, 3)]),  # the [2000Value] entry
     ("EDS031", var("0x0003", "LowLimit=100", "HighLimit=-100"), "t.eds", None, [(5, 10)]),
     ("EDS031", var("0x0007", "LowLimit=$NODEID+0x200", "HighLimit=0x180"), "t.eds", None, [(5, 10)]),
     ("EDS035", var("0x0006", "DefaultValue=5000", "HighLimit=3000"), "t.eds", None, [(5, 14)]),
@@ -45,7 +45,7 @@ FOUND = [
     ("EDS039", var("0x0008", "DefaultValue=nan"), "t.eds", None, [(5, 14)]),
     ("EDS039", var("0x0011", "HighLimit=inf"), "t.eds", None, [(5, 11)]),
     ("EDS061", NODE + var("0x0006", "HighLimit=3000", "ParameterValue=5000"), "t.dcf", None, [(8, 16)]),
-    ("EDS061", compact("HighLimit=10", values="2=20"), "t.dcf", None, [(3, 1)]),
+    ("EDS061", compact("HighLimit=10", values="2=20"), "t.dcf", None, [(12, 3)]),  # the [2000Value] entry
 ]
 
 CLEAN = [

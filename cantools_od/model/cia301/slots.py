@@ -17,6 +17,8 @@ class Locator(Protocol):
 
     def value_at(self, section: Section | None, key: str) -> Location: ...
 
+    def written_at(self, owner: Object, var: Variable, key: str) -> Location: ...
+
 
 def as_int(value: object) -> int | None:
     """An integer value; None for bool, text, `$NODEID` formulas and unreadable values."""
@@ -45,8 +47,9 @@ class Slot:
         return isinstance(self.var, SubObject) and self.var.implicit
 
     def location(self, at: Locator) -> Location:
-        """Where the configured value is written; the owner when the entry has no section."""
-        return at.at(self.owner) if self.implicit else at.value_at(self.var, self.key)
+        """Where the configured value is written: the [xxxxValue] entry of a CompactSubObj value,
+        the owner when the entry is not written at all (CompactPDO, CompactSubObj default)."""
+        return at.written_at(self.owner, self.var, self.key)
 
     def key_location(self, at: Locator, key: str) -> Location:
         if self.implicit:

@@ -1,0 +1,88 @@
+"""Scale: `cantools-od lint` and `cantools-od gen` of synthetic EDS files of growing size, as a user
+runs them (one process each), with wall-clock time and peak resident memory of that process.
+
+    python bench/bench_scale.py                   # 5, 25 and 50 MB; lint and gen -t c
+    python bench/bench_scale.py 1M 5M -t c -t rust
+    python bench/bench_scale.py --json
+
+The files come from bench/synthetic_eds.py. Target (issue #9): peak RSS at most 10 times the file
+size, and time growing linearly with it. See bench/README.md for figures.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from synthetic_eds import parse_size, synthetic_eds
+
+
+def command() -> list[str]:
+    script = Path(sys.executable).parent / "cantools-od"
+    return [str(script)] if script.exists() else [sys.executable, "-m", "cantools_od"]
+
+
+def measure(args: list[str]) -> dict[str, float | int]:
+    """Wall-clock seconds, peak RSS in bytes and exit status of one run of cantools-od."""
+    start = time.perf_counter()
+    process = subprocess.Popen([*command(), *args], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(process.pid, 0)
+    seconds = time.perf_counter() - start
+    process.returncode = os.waitstatus_to_exitcode(status)
+    return {"seconds": round(seconds, 2), "peak_rss": usage.ru_maxrss * 1024, "exit": process.returncode}
+
+
+def run(sizes: list[int], targets: list[str], folder: Path) -> list[dict[str, object]]:
+    rows: list[dict[str, object]] = []
+    for size in sizes:
+        eds = folder / f"synthetic_{size}.eds"
+        data = synthetic_eds(size)
+        eds.write_bytes(data)
+        row: dict[str, object] = {"bytes": len(data), "sections": data.count(b"\n[") + 1}
+        del data
+        row["lint"] = measure(["lint", str(eds)])
+        for target in targets:
+            row[f"gen {target}"] = measure(["gen", str(eds), "-t", target, "-o", str(folder / "out"), "--name", "big"])
+        rows.append(row)
+        eds.unlink()
+    return rows
+
+
+def report(rows: list[dict[str, object]]) -> str:
+    runs = [key for key in rows[0] if key not in ("bytes", "sections")]
+    head = f"{'file':>9} {'sections':>9}" + "".join(f" | {run:>24}" for run in runs)
+    lines = [head, "-" * len(head)]
+    for row in rows:
+        size = int(row["bytes"])  # type: ignore[call-overload]
+        cells = []
+        for run in runs:
+            result = row[run]
+            assert isinstance(result, dict)
+            rss = result["peak_rss"]
+            flag = "" if result["exit"] in (0, 1) else f" exit {result['exit']}"
+            cells.append(f"{result['seconds']:>7.1f} s {rss / 1e6:>6.0f} MB {rss / size:>4.1f}x{flag}")
+        lines.append(f"{size / 1e6:>6.1f} MB {row['sections']:>9}" + "".join(f" | {c:>24}" for c in cells))
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("sizes", nargs="*", type=parse_size, default=[parse_size(s) for s in ("5M", "25M", "50M")])
+    parser.add_argument("-t", "--target", dest="targets", action="append", help="gen targets (default: c)")
+    parser.add_argument("--json", action="store_true")
+    args = parser.parse_args(argv)
+    with tempfile.TemporaryDirectory(prefix="bench_scale_") as folder:
+        rows = run(args.sizes, args.targets or ["c"], Path(folder))
+    print(json.dumps(rows, indent=2) if args.json else report(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

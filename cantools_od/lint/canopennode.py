@@ -1,0 +1,315 @@
+"""Rule family: canopennode — what the CANopenNode v4 stack needs of an object dictionary.
+
+These rules run only with `lint --profile canopennode` and whenever `gen -t canopennode` runs:
+an error means the generated OD.h/OD.c would not compile, would trip one of CANopen.c's
+`#error` checks, or would make `CO_CANopenInit` fail. None has an automatic fix: the right
+change (a type, a count, an extra object) is a design decision. Settings an EDS cannot hold go
+into `<stem>.canopennode.toml` beside it (see docs/canopennode.md).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator
+
+from ..model import Device, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
+from ..model.canopennode import CONSECUTIVE, COUNT_LIMITS, NODEID_AREAS, count_label_for, standard_storage_group
+from .rules import Context, Finding, rule
+
+E, W = Severity.ERROR, Severity.WARNING
+PROFILE = "canopennode"
+_C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_SUPPORTED = (ObjectKind.VAR, ObjectKind.DOMAIN, ObjectKind.ARRAY, ObjectKind.RECORD)
+
+
+def _objects(ctx: Context) -> Iterator[Object]:
+    """The objects that go into the generated OD, when the profile is on."""
+    if ctx.options.profile != PROFILE:
+        return
+    for obj in ctx.device.objects.values():
+        if obj.kind in _SUPPORTED and not (obj.canopennode is not None and obj.canopennode.disabled):
+            yield obj
+
+
+def _entries(obj: Object) -> list[tuple[int, Variable]]:
+    return sorted(obj.subs.items()) if obj.has_subs else [(0, obj)]
+
+
+@rule(
+    "CNO001",
+    E,
+    "Data type the stack cannot hold",
+    """
+Every entry of a CANopenNode object dictionary is stored in a C variable of its CiA 301 basic
+type (BOOLEAN to UNSIGNED64, REAL32/64, the string types, TIME types, DOMAIN). An entry without
+a DataType, with an unknown index or with a complex type (PDO_MAPPING, IDENTITY...) as its own
+type cannot be laid out: the exporter has no C type for it. Fix: give the entry the basic type
+it holds; there is no automatic fix.""",
+    "[2000]\nParameterName=Mapping\nObjectType=0x7\nDataType=0x0021\nAccessType=rw",
+)
+def unsupported_type(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        for subindex, var in _entries(obj):
+            dtype = ctx.device.entry_type(var, obj)
+            if dtype is None or dtype.kind is ValueKind.COMPLEX:
+                what = f"DataType {var.data_type:#06x}" if var.data_type else "no DataType"
+                what = f"type {dtype.name}" if dtype else what
+                where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
+                yield ctx.report("CNO001", f"{where} has {what}: CANopenNode has no C type for it",
+                                 ctx.at(ctx.section_of(obj, var), "DataType"))  # fmt: skip
+
+
+@rule(
+    "CNO002",
+    E,
+    "Sub-index 0 of an ARRAY or RECORD is not UNSIGNED8",
+    """
+The stack keeps sub-index 0 of an ARRAY as `uint8_t` (`OD_obj_array_t.dataOrig0`) and reads it
+as the number of entries; CiA 301 defines it as UNSIGNED8 too. Another type there makes the
+generated data disagree with what the stack reads. Fix: DataType=0x0005 on sub-index 0.""",
+    "[1010sub0]\nParameterName=Highest sub-index supported\nDataType=0x0007",
+)
+def sub0_type(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        sub0 = obj.subs.get(0)
+        if obj.has_subs and sub0 is not None and sub0.data_type not in (None, 0x0005):
+            message = f"{obj.index:04X}h sub0 has DataType {sub0.data_type:#06x}, the stack needs UNSIGNED8"
+            yield ctx.report("CNO002", message, ctx.at(ctx.section_of(obj, sub0), "DataType"))
+
+
+@rule(
+    "CNO003",
+    E,
+    "ARRAY elements differ in type or attribute",
+    """
+A CANopenNode ARRAY is one C array: one element type, one element size and one attribute
+(`OD_obj_array_t.attribute`) for sub-indices 1 to n. Elements with another DataType, AccessType
+or PDOMapping than sub-index 1 cannot be represented; the exporter would silently use
+sub-index 1's. Fix: make the elements alike, or declare the object as a RECORD.""",
+    "[2000sub1]\nDataType=0x0007\nAccessType=rw\n\n[2000sub2]\nDataType=0x0006\nAccessType=ro",
+)
+def array_elements(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        if obj.kind is not ObjectKind.ARRAY or 1 not in obj.subs:
+            continue
+        first = obj.subs[1]
+        for subindex, sub in sorted(obj.subs.items()):
+            if subindex < 2:
+                continue
+            for key, field in (("DataType", "data_type"), ("AccessType", "access"), ("PDOMapping", "pdo_mapping")):
+                if getattr(sub, field) != getattr(first, field):
+                    message = f"{obj.index:04X}h sub{subindex:X}: {key} differs from sub1's; an ARRAY has one"
+                    yield ctx.report("CNO003", message, ctx.at(ctx.section_of(obj, sub), key))
+                    break
+
+
+@rule(
+    "CNO004",
+    E,
+    "ARRAY sub-indices with gaps, or an ARRAY/RECORD without entries",
+    """
+The stack finds ARRAY element n at position n-1 of one C array and takes the number of
+sub-entries from the OD list, so an ARRAY's sub-indices must run 0, 1, ... n without gaps. An
+ARRAY with no element would be a zero-length C array, which C forbids, and a RECORD needs
+sub-index 0 plus at least one member. Fix: add the missing sub-indices (or use a RECORD, whose
+sub-indices may have gaps).""",
+    "[2000]\nObjectType=0x8\nSubNumber=2\n\n[2000sub0]\n...\n\n[2000sub3]\n...",
+)
+def array_shape(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        if not obj.has_subs:
+            continue
+        subs = sorted(obj.subs)
+        where = ctx.at(obj)
+        if len(subs) < 2 or subs[0] != 0:
+            missing = "sub-index 0" if 0 not in obj.subs else "sub-index above 0"
+            yield ctx.report("CNO004", f"{obj.index:04X}h ({obj.kind.name}) has no {missing}", where)
+        elif obj.kind is ObjectKind.ARRAY and subs != list(range(len(subs))):
+            gap = next(n for n in range(len(subs)) if n not in obj.subs)
+            yield ctx.report("CNO004", f"{obj.index:04X}h: ARRAY sub-index {gap:X}h is missing", where)
+
+
+@rule(
+    "CNO005",
+    E,
+    "Object the stack requires is missing",
+    """
+CANopen.c stops the build with `#error` unless OD_CNT_NMT, OD_CNT_EM and OD_CNT_HB_PROD are 1,
+and (with the emergency producer, on by default) OD_CNT_EM_PROD is 1: the device needs 1000h
+(device type, NMT), 1001h (error register, EM), 1014h (COB-ID EMCY, EM_PROD) and 1017h
+(producer heartbeat time, HB_PROD); with the heartbeat consumer (on by default) CANopen.c sizes
+its tables by OD_CNT_ARR_1016 even when it is 0, so 1016h (HB_CONS) must be there too. The
+emergency history (on by default) needs 1003h, SYNC also reads 1006h (communication cycle
+period), SRDO 13FEh and 13FFh, without a fallback. These follow the stack's default CO_CONFIG_*;
+a build that turns a function off can ignore the code in `[tool.cantools-od]`. Fix: add the
+object; the count label follows from its index (or set `count_label` in the .canopennode.toml
+file).""",
+    "[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001\n; no 1014h, no 1017h",
+)
+def required_counts(ctx: Context) -> Iterator[Finding]:
+    counts = _counts(ctx)
+    if ctx.options.profile != PROFILE:
+        return
+    required = (("NMT", 0x1000), ("EM", 0x1001), ("EM_PROD", 0x1014), ("HB_CONS", 0x1016), ("HB_PROD", 0x1017))
+    for label, index in required:
+        if label not in counts:
+            message = f"no object counts as {label} (usually {index:04X}h): CANopen.c needs OD_CNT_{label}"
+            yield ctx.report("CNO005", message, ctx.at(ctx.device.mandatory_objects or ctx.device.file_info))
+    present = {obj.index for obj in _objects(ctx)}
+    for label, needed in (("EM", (0x1003,)), ("SYNC", (0x1006,)), ("SRDO", (0x13FE, 0x13FF))):
+        for index in needed if label in counts else ():
+            if index not in present:
+                message = f"{counts[label][0].index:04X}h counts as {label}, so CANopen.c also uses {index:04X}h"
+                yield ctx.report("CNO005", message, ctx.at(counts[label][0]))
+
+
+def _counts(ctx: Context) -> dict[str, list[Object]]:
+    counts: dict[str, list[Object]] = {}
+    for obj in _objects(ctx):
+        label = count_label_for(obj.index, obj.canopennode)
+        if label is not None:
+            counts.setdefault(label, []).append(obj)
+    return counts
+
+
+@rule(
+    "CNO006",
+    E,
+    "Count label or array size outside the stack's limits",
+    """
+CANopen.c checks the OD_CNT_* counts with `#error` (NMT, EM, HB_PROD exactly 1; SYNC, TIME,
+HB_CONS, GFC at most 1; SDO servers 1-128, clients up to 128; RPDO and TPDO up to 512; SRDO up
+to 64) and needs 1016h to be an ARRAY of 1 to 127 heartbeat consumers. Its init loops also walk the OD list by
+position: SDO server i is 1200h+i, RPDO i is 1400h+i with mapping 1600h+i, TPDO i 1800h+i with
+1A00h+i, SRDO i 1301h+i with 1381h+i, so these must be consecutive and paired. Count labels and
+storage groups become C names, so they must be C identifiers. Fix: correct the objects or the
+`count_label` setting.""",
+    "[1400]\n...\n[1402]\n; 1401h missing: RPDO 2 would use 1402h",
+)
+def count_limits(ctx: Context) -> Iterator[Finding]:
+    counts = _counts(ctx)
+    for label, objects in counts.items():
+        where = ctx.at(objects[0])
+        if not _C_IDENTIFIER.fullmatch(label):
+            yield ctx.report("CNO006", f"{objects[0].index:04X}h: count label {label!r} is not a C identifier", where)
+            continue
+        least, most = COUNT_LIMITS.get(label, (0, 0xFFFF))
+        if not least <= len(objects) <= most:
+            limit = f"exactly {least}" if least == most else f"{least} to {most}"
+            yield ctx.report("CNO006", f"{len(objects)} objects count as {label}; the stack allows {limit}", where)
+        yield from _consecutive(ctx, label, objects)
+    heartbeat = ctx.device.objects.get(0x1016)
+    if "HB_CONS" in counts and heartbeat is not None and heartbeat.kind is not ObjectKind.ARRAY:
+        yield ctx.report("CNO006", "1016h must be an ARRAY: the stack sizes its consumers by OD_CNT_ARR_1016",
+                         ctx.at(heartbeat))  # fmt: skip
+    elif "HB_CONS" in counts and heartbeat is not None and not 1 <= len(heartbeat.subs) - 1 <= 127:
+        yield ctx.report("CNO006", f"1016h has {len(heartbeat.subs) - 1} consumers; the stack allows 1 to 127",
+                         ctx.at(heartbeat))  # fmt: skip
+    for obj in _objects(ctx):
+        group = (obj.canopennode.storage_group if obj.canopennode else None) or standard_storage_group(obj.index)
+        if not _C_IDENTIFIER.fullmatch(group):
+            yield ctx.report("CNO006", f"{obj.index:04X}h: storage group {group!r} is not a C identifier", ctx.at(obj))
+
+
+def _consecutive(ctx: Context, label: str, objects: list[Object]) -> Iterator[Finding]:
+    if label not in CONSECUTIVE:
+        return
+    first, partner = CONSECUTIVE[label]
+    indices = [o.index for o in objects]
+    expected = list(range(first, first + len(objects)))
+    if indices != expected:
+        wrong = next(i for i, e in zip(indices, expected, strict=True) if i != e)
+        message = f"{label} objects must be {first:04X}h, {first + 1:04X}h, ... without gaps; {wrong:04X}h is not"
+        yield ctx.report("CNO006", message, ctx.at(ctx.device.objects[wrong]))
+        return
+    present = {o.index for o in _objects(ctx)}
+    for index in indices:
+        if partner is not None and index + partner not in present:
+            message = f"{index:04X}h has no mapping object {index + partner:04X}h; the stack pairs them by position"
+            yield ctx.report("CNO006", message, ctx.at(ctx.device.objects[index]))
+
+
+@rule(
+    "CNO007",
+    E,
+    "Default value the stack cannot store",
+    """
+The generator writes every default into C initializers. A DefaultValue that could not be read
+as the entry's type, or a REAL32 beyond the float range, has no C spelling. Fix: write the
+value in the entry's type.""",
+    "[2000]\nDataType=0x0008\nDefaultValue=1e40",
+)
+def unstorable_default(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        for subindex, var in _entries(obj):
+            value = var.parameter_value if var.parameter_value is not None else var.default
+            dtype = ctx.device.entry_type(var, obj)
+            bad = isinstance(value, RawValue)
+            if dtype is not None and dtype.index == 0x0008 and isinstance(value, (int, float)):
+                bad = math.isfinite(value) and abs(value) > 3.4028234663852886e38
+            if bad:
+                where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
+                shown = value.text if isinstance(value, RawValue) else value
+                yield ctx.report("CNO007", f"{where}: default {shown!r} cannot be stored as its type",
+                                 ctx.at(ctx.section_of(obj, var), "DefaultValue"))  # fmt: skip
+
+
+@rule(
+    "CNO008",
+    W,
+    "$NODEID where the stack does not add the node-ID",
+    """
+CANopenNode stores `$NODEID+n` as n: the stack adds the node-ID itself, but only to the
+COB-IDs it manages (1014h EMCY, 1200h-12FFh SDO, 1400h-15FFh RPDO, 1800h-19FFh TPDO, when they
+hold their pre-defined value). Elsewhere the device would see n alone. Fix: write the value the
+device needs, or set it at run time in the application.""",
+    "[2000]\nParameterName=Reply COB-ID\nDataType=0x0007\nDefaultValue=$NODEID+0x700",
+)
+def nodeid_elsewhere(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        if any(low <= obj.index <= high for low, high in NODEID_AREAS):
+            continue
+        for subindex, var in _entries(obj):
+            value = var.parameter_value if var.parameter_value is not None else var.default
+            if isinstance(value, NodeIdExpr):
+                where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
+                message = f"{where}: {value.canonical()} is stored as 0x{value.offset:X}; no node-ID is added here"
+                yield ctx.report("CNO008", message, ctx.at(ctx.section_of(obj, var), "DefaultValue"))
+
+
+@rule(
+    "CNO009",
+    W,
+    "Writable string without memory",
+    """
+A VISIBLE_STRING, UNICODE_STRING or OCTET_STRING gets as many bytes as its default, or
+`string_length_min` when larger. A writable string with an empty default and no minimum gets
+none: SDO writes to it fail until the application provides memory through OD_extension_init.
+CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS cannot say it.
+Fix: set `string_length_min` for the entry in `<stem>.canopennode.toml`.""",
+    "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nDefaultValue=",
+)
+def string_without_memory(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        for subindex, var in _entries(obj):
+            dtype = ctx.device.entry_type(var, obj)
+            if dtype is None or dtype.kind not in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS):
+                continue
+            if dtype.index == 0x000F or var.access is None or not var.access.writable:
+                continue
+            value = var.parameter_value if var.parameter_value is not None else var.default
+            minimum = var.canopennode.string_length_min if var.canopennode else None
+            if not value and not minimum:
+                where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
+                message = f"{where}: writable {dtype.name} with no default and no string_length_min: no memory"
+                yield ctx.report("CNO009", message, ctx.at(ctx.section_of(obj, var), "DefaultValue"))
+
+
+def profile_findings(device: Device, node_id: int | None = None, ignore: tuple[str, ...] = ()) -> list[Finding]:
+    """Only the canopennode rules, for gen -t canopennode; `ignore` as in [tool.cantools-od]."""
+    from .config import Selection
+    from .rules import LintOptions
+    from .runner import lint
+
+    return lint(device, LintOptions(node_id=node_id, profile=PROFILE), Selection(select=("CNO",), ignore=ignore))

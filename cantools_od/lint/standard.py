@@ -1,0 +1,290 @@
+"""Rule family: standard objects — the objects of CiA 301 (1000h-1FFFh), CiA 302 and, for a drive,
+CiA 402, checked against their definitions in the standard (cantools_od/model/cia301/definitions.py).
+
+A master reads such an object by the standard without looking at the EDS: a 1000h written as
+INTEGER32 or a 1018h sub-index 3 as UNSIGNED16 makes a tool that trusts the file read other bytes
+than the device sends. Vendors that deviate on purpose suppress the code (`--ignore STD003` or a
+`; cantools-od: ignore[STD003]` comment).
+
+The PDO records (1400h-1BFFh) are checked by the pdo and cobid families (PDO002, PDO012, PDO013,
+PDO064), and sub-index 0 of every ARRAY and RECORD by EDS025; these rules leave them out.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable, standard_type
+from ..model.cia301 import cia402, definitions
+from ..model.cia301.definitions import Definition, Entry, Mapping
+from ..model.cia301.slots import as_int
+from .rules import Context, Finding, Fix, rule
+
+E, W = Severity.ERROR, Severity.WARNING
+
+_PDO_RECORDS = range(0x1400, 0x1C00)
+
+
+def _type_name(data_type: int | None) -> str:
+    found = standard_type(data_type)
+    return f"{found.name} (0x{data_type:04X})" if found is not None and data_type is not None else f"{data_type}"
+
+
+def is_drive(device: Device) -> bool:
+    """1000h names device profile 402 (the drive profile) in its low 16 bits."""
+    obj = device.objects.get(0x1000)
+    value = as_int(device.resolve(obj.value())) if obj is not None else None
+    return value is not None and cia402.device_profile(value) == cia402.PROFILE
+
+
+def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
+    """Every object the file writes that a standard defines, with its definition."""
+    drive = is_drive(device)
+    for index, obj in device.objects.items():
+        if obj.implicit or index in _PDO_RECORDS:
+            continue
+        if 0x1000 <= index <= 0x1FFF:
+            found = definitions.definition(index)
+        elif drive and 0x6000 <= index <= 0x67FF:
+            found = cia402.definition(index)
+        else:
+            continue
+        if found is not None:
+            yield obj, found
+
+
+def same_layout(obj: Object, found: Definition) -> bool:
+    """The object has sub-indices where the standard's has them (ARRAY and RECORD alike), or none."""
+    return found.accepts(obj.kind) or obj.has_subs == (found.kind in (ObjectKind.ARRAY, ObjectKind.RECORD))
+
+
+def _entries(obj: Object, found: Definition) -> Iterator[tuple[int, Variable, Entry]]:
+    """(sub-index, entry as written, entry as defined) after sub-index 0; a CompactSubObj array's elements once."""
+    if not same_layout(obj, found):
+        return  # STD001
+    if not obj.has_subs:
+        entry = found.entry(0)
+        if entry is not None and not found.subs[1:] and found.rest is None:
+            yield 0, obj, entry
+        return
+    compact_seen = False
+    for subindex, sub in obj.subs.items():
+        entry = found.entry(subindex)
+        if entry is None or subindex == 0:
+            continue
+        if sub.implicit:  # written once, as the object's own keys
+            if compact_seen:
+                continue
+            compact_seen = True
+        yield subindex, sub, entry
+
+
+def _label(obj: Object, subindex: int, var: Variable) -> str:
+    if var is obj:
+        return f"[{obj.index:04X}]"
+    return f"[{obj.index:04X}sub{subindex:X}]"
+
+
+def _what(obj: Object, found: Definition, subindex: int, var: Variable, entry: Entry) -> str:
+    """The standard entry, named as the standard names it."""
+    named = f"{obj.index:04X}h {found.name}"
+    return named if var is obj else f"{named} sub-index {subindex} ({entry.name})"
+
+
+def _keys_of(ctx: Context, obj: Object, var: Variable, key: str) -> tuple[Variable, str]:
+    """The section whose `key` says it: the object's own for CompactSubObj elements."""
+    return (obj, key) if isinstance(var, SubObject) and var.implicit else (var, key)
+
+
+@rule(
+    "STD001",
+    E,
+    "Standard object of another object type",
+    """
+CiA 301 §7.5.2 (and CiA 302, CiA 402-2) fix the object type of each standard object: 1000h is a
+VAR, 1018h a RECORD, 1016h an ARRAY. A file that makes a VAR of an ARRAY (or the reverse) gives
+another layout of sub-indices than the one a master addresses: it reads sub-index 0 where the
+device has none, or misses the entries.
+
+Error: the object cannot be read the way the standard says. An ARRAY written where the standard
+has a RECORD (or the reverse) lays out the same entries: that is STD002.
+Fix: none; the object must be described again.
+Fixed: `[1018]` with `ObjectType=0x9` and sub-indices 0-4.""",
+    "[1018]\nParameterName=Identity\nObjectType=0x7\nDataType=0x0007\nAccessType=ro",
+)
+def object_type(ctx: Context) -> Iterator[Finding]:
+    for obj, found in standard_objects(ctx.device):
+        if same_layout(obj, found):
+            continue
+        message = (
+            f"[{obj.index:04X}] ObjectType {obj.kind.name}: {found.clause} defines {obj.index:04X}h "
+            f"{found.name} as {found.kind.name}"
+        )
+        yield ctx.report("STD001", message, ctx.value_at(obj, "ObjectType"))
+
+
+@rule(
+    "STD002",
+    W,
+    "Standard ARRAY written as RECORD, or the reverse",
+    """
+The standard defines the object as an ARRAY (all elements of one data type, 1016h) or as a RECORD
+(entries of their own types, 1018h), and the file writes the other. The sub-indices and their
+types can still be the same, so a master reading the entries gets the right bytes; tools that
+build their API from the object type (python-canopen's ODArray/ODRecord, CANopenNode's OD.h)
+offer another interface than for the standard object.
+
+Warning: nothing is read wrong; the description differs from the standard's.
+Fix: none offered (changing ObjectType changes generated code).
+Fixed: `ObjectType=0x9` for 1018h.""",
+    "[1018]\nParameterName=Identity\nObjectType=0x8\nDataType=0x0007\nSubNumber=5",
+)
+def array_or_record(ctx: Context) -> Iterator[Finding]:
+    for obj, found in standard_objects(ctx.device):
+        wanted = (ObjectKind.ARRAY, ObjectKind.RECORD)
+        if obj.kind is found.kind or obj.kind not in wanted or found.kind not in wanted:
+            continue
+        message = f"[{obj.index:04X}] is {obj.kind.name}; {found.clause} defines {found.name} as {found.kind.name}"
+        yield ctx.report("STD002", message, ctx.value_at(obj, "ObjectType"))
+
+
+@rule(
+    "STD003",
+    E,
+    "Standard object entry of another data type",
+    """
+The data type of every sub-index of a standard object is fixed by its standard: 1000h is
+UNSIGNED32, 1001h UNSIGNED8, 1017h UNSIGNED16, 1018h sub-indices 1-4 UNSIGNED32, 6041h (CiA 402)
+UNSIGNED16. A master reads these objects by the standard: an entry declared INTEGER32 or
+UNSIGNED16 makes tools that trust the file (python-canopen, lely, generated code) decode and
+encode other bytes than the device uses, and an SDO write of the declared size is refused.
+
+Error: the file and the standard give different bytes for the same entry.
+Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.
+Fixed: `[1000]` with `DataType=0x0007`.""",
+    "[1000]\nParameterName=Device type\nDataType=0x0004\nAccessType=ro",
+)
+def data_type(ctx: Context) -> Iterator[Finding]:
+    for obj, found in standard_objects(ctx.device):
+        for subindex, var, entry in _entries(obj, found):
+            written = ctx.device.entry_type(var, obj)
+            if entry.data_type is None or var.data_type is None or written is None:
+                continue  # open in the standard, or missing/undefined in the file (EDS020, EDS080)
+            if written.index == entry.data_type:
+                continue
+            section, key = _keys_of(ctx, obj, var, "DataType")
+            message = (
+                f"{_label(obj, subindex, var)} DataType={_type_name(var.data_type)}: {found.clause} defines "
+                f"{_what(obj, found, subindex, var, entry)} as {_type_name(entry.data_type)}"
+            )
+            fix = Fix(f"set DataType=0x{entry.data_type:04X}", False, _set_type(obj.index, subindex, entry.data_type))
+            yield ctx.report("STD003", message, ctx.value_at(section, key), fix)
+
+
+def _set_type(index: int, subindex: int, wanted: int) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        obj = device.objects.get(index)
+        var = obj.entry(subindex) if obj is not None else None
+        if var is not None:
+            var.data_type = wanted
+
+    return apply
+
+
+@rule(
+    "STD004",
+    W,
+    "Standard object entry with an access type the standard does not allow",
+    """
+CiA 301 §7.5.2 gives the access of each standard entry: 1000h and 1018h are read-only (ro or
+const), 1024h is write-only, the heartbeat and COB-ID objects are rw or, where the device fixes
+them, ro/const. A master that follows the file writes where the device refuses, or does not write
+what the standard says it may (a consumer heartbeat time, an error history clear through 1003h sub 0).
+
+Warning: communication works, but configuration steps fail or are skipped.
+Fix: none offered (the device's behaviour decides which side is wrong).
+Fixed: `[1018sub1]` with `AccessType=ro`.""",
+    "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
+    "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
+    "AccessType=rw",
+)
+def access_type(ctx: Context) -> Iterator[Finding]:
+    for obj, found in standard_objects(ctx.device):
+        for subindex, var, entry in _all_entries(obj, found):
+            if entry.access is None or var.access is None or var.access in entry.access:
+                continue
+            allowed = "/".join(sorted(a.value for a in entry.access if a.value in ("ro", "wo", "rw", "const")))
+            section, key = _keys_of(ctx, obj, var, "AccessType")
+            message = (
+                f"{_label(obj, subindex, var)} AccessType={var.access.value}: {found.clause} gives "
+                f"{_what(obj, found, subindex, var, entry)} access {allowed}"
+            )
+            yield ctx.report("STD004", message, ctx.value_at(section, key))
+
+
+def _all_entries(obj: Object, found: Definition) -> Iterator[tuple[int, Variable, Entry]]:
+    """Like _entries, with sub-index 0 of an ARRAY or RECORD."""
+    count = obj.subs.get(0)
+    if obj.has_subs and count is not None and not count.implicit and same_layout(obj, found):
+        yield 0, count, found.subs[0]
+    yield from _entries(obj, found)
+
+
+@rule(
+    "STD005",
+    W,
+    "Standard object entry PDO-mappable against the standard",
+    """
+CiA 301 §7.5.2 says which standard entries may be mapped into a PDO: 1001h, 1002h, 1013h and the
+OS prompt 1026h may; 1000h, 1018h, the heartbeat, COB-ID and SDO objects may not. An entry marked
+`PDOMapping=1` against the standard invites a master to map it, and a standard device refuses that
+mapping (SDO abort 0604 0041h).
+
+Warning: nothing is read wrong; a configuration step can fail.
+Fix: none offered.
+Fixed: `PDOMapping=0`.""",
+    "[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=1",
+)
+def mapping(ctx: Context) -> Iterator[Finding]:
+    for obj, found in standard_objects(ctx.device):
+        for subindex, var, entry in _all_entries(obj, found):
+            if entry.mapping is Mapping.NO and var.pdo_mapping:
+                section, key = _keys_of(ctx, obj, var, "PDOMapping")
+                message = (
+                    f"{_label(obj, subindex, var)} PDOMapping=1: {found.clause} does not let "
+                    f"{_what(obj, found, subindex, var, entry)} be mapped"
+                )
+                yield ctx.report("STD005", message, ctx.value_at(section, key))
+
+
+@rule(
+    "STD006",
+    W,
+    "Standard object entry with a value the standard does not allow",
+    """
+Some standard entries allow only some values: 1018h sub-index 0 is 1-4, 1010h/1011h/1016h
+sub-index 0 at least 1, 1019h (SYNC counter overflow) 0 or 2-240, a mapping count 0-64. A device
+description with another default announces a device that a standard master cannot handle.
+
+Warning: the value is one the standard rules out; which side is wrong depends on the device.
+Fix: none offered.
+Fixed: `DefaultValue=4` for 1018h sub-index 0.""",
+    "[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=1",
+)
+def value_range(ctx: Context) -> Iterator[Finding]:
+    for obj, found in standard_objects(ctx.device):
+        for subindex, var, entry in _all_entries(obj, found):
+            if entry.values is None or (isinstance(var, SubObject) and var.implicit):
+                continue
+            key = "ParameterValue" if var.parameter_value is not None else "DefaultValue"
+            value = as_int(ctx.device.resolve(var.value()))
+            if value is None or any(low <= value <= high for low, high in entry.values):
+                continue
+            if subindex == 0 and obj.has_subs and value == max(obj.subs):
+                continue  # sub-index 0 counts what the file has; entries the standard lacks are another matter
+            allowed = ", ".join(f"{low}" if low == high else f"{low}-{high}" for low, high in entry.values)
+            message = (
+                f"{_label(obj, subindex, var)} {key}={value}: {found.clause} allows {allowed} for "
+                f"{_what(obj, found, subindex, var, entry)}"
+            )
+            yield ctx.report("STD006", message, ctx.value_at(var, key))

@@ -82,7 +82,9 @@ def apply(device: Device, objects: list[Var], text: str, changes: list[Change]) 
     for change in changes:
         obj = device.objects[change.index]
         assert obj.origin is not None
-        line, column, _ = obj.origin.keys[change.key]
+        where = obj.origin.where(change.key)
+        assert where is not None
+        line, column, _ = where
         written = next(k.written for k in by_index[change.index].keys if k.name == change.key)
         if change.respell:
             if written != change.key:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 from peermatrix import Difference, FileResult, Judgement, judge_all
 
-from support import corpus_files
+from support import corpus_devices
 
 # python-canopen reads the default of a signed type written in hex as an unsigned number; CiA 306 (value
 # definitions: a hex number is the bit pattern of the type) makes it the two's complement. Ours writes the
@@ -46,7 +46,7 @@ def _explained(rule: str, peer: str, d: Difference, data_type: object) -> bool:
 
 @pytest.fixture(scope="module")
 def matrix(tmp_path_factory: pytest.TempPathFactory) -> dict[str, FileResult]:
-    files = corpus_files()
+    files = corpus_devices()
     if not files:
         pytest.skip("../shared/eds-corpus is absent")
     return {r.name: r for r in judge_all(files, tmp_path_factory.mktemp("peers"), full=False)}

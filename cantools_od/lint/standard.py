@@ -17,12 +17,13 @@ from collections.abc import Callable, Iterator
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable, standard_type
 from ..model.cia301 import cia402, definitions
 from ..model.cia301.definitions import Definition, Entry, Mapping
+from ..model.cia301.pdo import PDO_AREA
 from ..model.cia301.slots import as_int
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
-_PDO_RECORDS = range(0x1400, 0x1C00)
+_PDO_RECORDS = PDO_AREA
 
 
 def _type_name(data_type: int | None) -> str:

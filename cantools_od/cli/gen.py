@@ -74,6 +74,7 @@ def command(
     from ..model.cia301.pdo import frame_bits
     from ..render import renderer
     from ..render.notes import with_left_out
+    from ..xdd.reader import refused
     from .canopennode import prepare_canopennode
 
     base = name or default_name(file)
@@ -85,6 +86,10 @@ def command(
         raise click.BadParameter(f"{base!r} is not a valid identifier", param_hint="--name")
     check_extension(file, "input")
     device = read_device(file, node_id)
+    if refused(device):  # no model of the file exists: an empty output would pass a build that must fail
+        report(device.diagnostics, minimum=Severity.ERROR)
+        click.echo(f"{file}: error: nothing generated: the file could not be read", err=True)
+        sys.exit(EXIT_FINDINGS)
     identifiers = identifiers_for(device, file, pin_file)
     extra_inputs = prepare_canopennode(device, file, explain) if "canopennode" in targets else []
     report(device.diagnostics, minimum=Severity.ERROR)

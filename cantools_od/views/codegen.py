@@ -224,6 +224,7 @@ def build_view(
             view_entries.append(PdoEntryView(target, mapped.bit_offset, mapped.bit_length, mapped.data_type))
         if pdo.count_invalid:
             problems.append(_diagnostic(device, pdo, f"{pdo.name}: its mapping counts {pdo.count} entries, at most 64"))
+            failed.add(pdo.name)
         if pdo.bit_length > max_pdo_bits:
             problems.append(
                 _diagnostic(device, pdo, f"{pdo.name}: its {pdo.bit_length} bits exceed the {max_pdo_bits}-bit frame")

@@ -16,7 +16,7 @@ from ..model import AccessType, Device, DeviceInfo, Dialect, NodeIdExpr, Object,
 from .canonical import canonical_xml, pdo_mapping_text
 from .context import ReadContext
 from .locations import attribute_spans
-from .reader import read_with_context
+from .reader import read_with_context, refused
 from .safe import Element
 from .vocabulary import ACCESS_NAME, ELEMENT_OF_TYPE
 
@@ -55,7 +55,6 @@ _INFO_KEYS = {
 }
 
 Edit = tuple[int, int, bytes]
-_REFUSED = ("XDD001", "XDD002", "XDD003", "XDD004")
 
 
 class _Unsupported(Exception):
@@ -66,7 +65,7 @@ def dumps_xml(device: Device, xdc: bool = False, preserve: bool = True) -> bytes
     if xdc and not device.is_dcf and device.node_id is None:
         raise ValueError("an XDD becomes an XDC for one node: give its node-ID")
     original = device._original
-    if original is not None and any(d.code in _REFUSED for d in device.diagnostics):
+    if original is not None and refused(device):
         return original  # not read as a device description: never replaced by what little was read
     if preserve and original is not None and device.file_format == "xdd" and xdc == device.is_dcf:
         kept = _preserve(device, original)

@@ -121,3 +121,19 @@ def test_utf16_file_is_read_and_unknown_encoding_refused() -> None:
     assert device.objects[0x1001].origin is not None and device.objects[0x1001].origin.line > 1
     odd = api.loads(document(MANDATORY).replace('encoding="utf-8"', 'encoding="klingon"'))
     assert [d.code for d in odd.diagnostics] == ["XDD001"]
+
+
+def test_gen_fails_on_a_refused_xdd_and_writes_nothing(tmp_path: Path) -> None:
+    """A build step must not pass on an XDD that could not be read (an empty header would compile)."""
+    from support import cli_command
+
+    source = tmp_path / "broken.xdd"
+    source.write_bytes(b'<?xml version="1.0"?>\n<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1">\n')
+    for extra in ([], ["--keep-going"]):
+        out = tmp_path / "out"
+        result = subprocess.run(
+            [*cli_command(), "gen", str(source), "-t", "c", "-o", str(out), *extra], capture_output=True, text=True
+        )
+        assert result.returncode == 1, result.stderr
+        assert "XDD001" in result.stderr and "Traceback" not in result.stderr
+        assert not out.exists()

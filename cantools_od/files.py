@@ -16,6 +16,7 @@ import secrets
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import BinaryIO
 
 
 class CannotWrite(Exception):
@@ -27,38 +28,44 @@ class CannotWrite(Exception):
         self.reason = reason
 
 
+Content = bytes | Iterable[bytes]
+"""A file's new content: bytes, or chunks of bytes as they are produced (then never all in memory)."""
+
+
 @dataclass
 class _Pending:
     path: Path  # as the caller named it, for messages
     target: Path  # the file that is replaced: `path`, or what its symbolic link points to
-    data: bytes
     temp: Path | None = None
 
 
-def write_if_changed(path: str | os.PathLike[str], data: bytes) -> bool:
+def write_if_changed(path: str | os.PathLike[str], data: Content) -> bool:
     """Atomically replace `path` with `data` unless it already holds exactly that; True when written.
 
     Raises CannotWrite with the reason when the file cannot be written."""
     return bool(write_all([(Path(path), data)]))
 
 
-def write_all(outputs: Iterable[tuple[Path, bytes]]) -> list[Path]:
+def write_all(outputs: Iterable[tuple[Path, Content]]) -> list[Path]:
     """Write every output whose content changes, or none of them; the paths written.
 
-    Every temporary file is written and flushed before the first one is renamed, so a full disk,
-    a read-only folder or a path that is a folder leaves every target as it was and no temporary
-    file behind. Raises CannotWrite naming the first output that failed."""
-    pending = [_Pending(path, _target(path), data) for path, data in outputs]
-    changed = [p for p in pending if not _holds(p.target, p.data)]
+    Outputs are taken one at a time, and chunked content is compared with the file it replaces as
+    it comes, so that a set of large outputs never has to be held in memory. Every temporary file
+    is written and flushed before the first one is renamed, so a full disk, a read-only folder, a
+    path that is a folder or a failure while producing content leaves every target as it was and
+    no temporary file behind. Raises CannotWrite naming the first output that failed."""
+    started: list[_Pending] = []
     created: list[Path] = []  # folders made for the outputs, removed again when the set fails
     try:
-        for item in changed:
-            _make_folder(item, created)
-            item.temp = _write_temp(item)
-        for item in changed:
+        for path, content in outputs:
+            item = _Pending(path, _target(path))
+            started.append(item)
+            if not _write_temp_if_changed(item, content, created):
+                started.pop()
+        for item in started:
             _rename(item)
     except BaseException:
-        for item in changed:
+        for item in started:
             if item.temp is not None:
                 with contextlib.suppress(OSError):
                     item.temp.unlink()
@@ -66,9 +73,9 @@ def write_all(outputs: Iterable[tuple[Path, bytes]]) -> list[Path]:
             with contextlib.suppress(OSError):
                 folder.rmdir()  # only when empty
         raise
-    for folder in {item.target.parent for item in changed}:
+    for folder in {item.target.parent for item in started}:
         _sync_folder(folder)
-    return [item.path for item in changed]
+    return [item.path for item in started]
 
 
 def _target(path: Path) -> Path:
@@ -81,16 +88,101 @@ def _target(path: Path) -> Path:
     return path
 
 
-def _holds(path: Path, data: bytes) -> bool:
-    try:
-        if path.stat().st_size != len(data):
+class _Existing:
+    """The file an output replaces, read alongside the new content: how much of it the content matched."""
+
+    def __init__(self, path: Path) -> None:
+        self.matched = 0
+        try:
+            self.handle: BinaryIO | None = open(path, "rb")  # noqa: SIM115 (closed by close())
+        except OSError:
+            self.handle = None  # missing, a folder, unreadable: the write decides
+
+    def holds(self, chunk: bytes) -> bool:
+        """True when the file continues with `chunk`."""
+        if self.handle is None:
             return False
-        return path.read_bytes() == data
-    except OSError:
-        return False  # missing, a folder, unreadable: the write decides
+        try:
+            same = self.handle.read(len(chunk)) == chunk
+        except OSError:
+            same = False
+        if same:
+            self.matched += len(chunk)
+        return same
+
+    def ends(self) -> bool:
+        """True when the file has nothing after what the content matched."""
+        if self.handle is None:
+            return False
+        try:
+            return self.handle.read(1) == b""
+        except OSError:
+            return False
+
+    def copy_matched(self, item: _Pending, out: BinaryIO) -> None:
+        """The part of the file the content matched, into `out`: it is the content's start."""
+        if not self.matched:
+            return
+        assert self.handle is not None
+        try:
+            self.handle.seek(0)
+            left = self.matched
+            while left:
+                block = self.handle.read(min(left, 1 << 20))
+                if not block:
+                    raise OSError(errno.EIO, "the file changed while it was read")
+                out.write(block)
+                left -= len(block)
+        except OSError as error:
+            raise CannotWrite(item.path, _reason(error)) from None
+
+    def close(self) -> None:
+        if self.handle is not None:
+            self.handle.close()
 
 
-def _write_temp(item: _Pending) -> Path:
+def _write_temp_if_changed(item: _Pending, content: Content, created: list[Path]) -> bool:
+    """Write `content` into a temporary file beside the target unless the target holds exactly it;
+    True when the temporary file was written (its path is then in `item.temp`)."""
+    chunks = [content] if isinstance(content, bytes) else content
+    existing = _Existing(item.target)
+    out: BinaryIO | None = None
+    try:
+        for chunk in chunks:
+            if out is None:
+                if existing.holds(chunk):
+                    continue
+                out = _open_temp(item, created)
+                existing.copy_matched(item, out)
+            _write(item, out, chunk)
+        if out is None:
+            if existing.ends():
+                return False
+            out = _open_temp(item, created)
+            existing.copy_matched(item, out)
+        try:
+            out.flush()
+            os.fsync(out.fileno())
+        except OSError as error:
+            raise CannotWrite(item.path, _reason(error)) from None
+        return True
+    finally:
+        existing.close()
+        if out is not None:
+            with contextlib.suppress(OSError):
+                out.close()
+
+
+def _write(item: _Pending, out: BinaryIO, chunk: bytes) -> None:
+    try:
+        out.write(chunk)
+    except OSError as error:
+        raise CannotWrite(item.path, _reason(error)) from None
+
+
+def _open_temp(item: _Pending, created: list[Path]) -> BinaryIO:
+    """A new temporary file beside the target (its folders made first), with the target's owner and mode."""
+    _make_folder(item, created)
     target = item.target
     if target.is_dir():
         raise CannotWrite(item.path, "it is a folder")
@@ -106,15 +198,17 @@ def _write_temp(item: _Pending) -> Path:
         raise CannotWrite(item.path, _reason(error)) from None
     item.temp = temp
     try:
-        with os.fdopen(fd, "wb") as handle:
-            if existing is not None:
-                _keep_owner_and_mode(handle.fileno(), existing)
-            handle.write(item.data)
-            handle.flush()
-            os.fsync(handle.fileno())
+        handle = os.fdopen(fd, "wb")
     except OSError as error:
+        os.close(fd)
         raise CannotWrite(item.path, _reason(error)) from None
-    return temp
+    if existing is not None:
+        try:
+            _keep_owner_and_mode(handle.fileno(), existing)
+        except OSError as error:
+            handle.close()
+            raise CannotWrite(item.path, _reason(error)) from None
+    return handle
 
 
 def _make_folder(item: _Pending, created: list[Path]) -> None:

@@ -13,6 +13,7 @@ from ..model import Device, Diagnostic, Severity
 from ..model.source import capped
 
 if TYPE_CHECKING:
+    from ..files import Content
     from ..identifiers import Identifiers
 
 EXIT_OK = 0
@@ -47,12 +48,12 @@ def check_extension(path: str, role: str) -> None:
         sys.exit(EXIT_USAGE)
 
 
-def write_outputs(outputs: Mapping[Path, bytes]) -> list[Path]:
+def write_outputs(outputs: Mapping[Path, bytes] | Iterable[tuple[Path, Content]]) -> list[Path]:
     """Write every output or none (see files.py); a failure exits with code 2 and one line."""
     from ..files import CannotWrite, write_all
 
     try:
-        return write_all(outputs.items())
+        return write_all(outputs.items() if isinstance(outputs, Mapping) else outputs)
     except CannotWrite as error:
         click.echo(f"error: {error}", err=True)
         sys.exit(EXIT_USAGE)

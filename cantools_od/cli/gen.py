@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import itertools
 import re
 import sys
+from collections.abc import Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -72,8 +74,6 @@ def command(
     header comments and on stderr."""
     from ..identifiers import is_identifier, pin_file_for
     from ..model.cia301.pdo import frame_bits
-    from ..render import renderer
-    from ..render.notes import with_left_out
     from ..xdd.reader import refused
     from .canopennode import prepare_canopennode
 
@@ -102,18 +102,12 @@ def command(
             click.echo(f"{why} (--keep-going generates the rest)", err=True)
             sys.exit(EXIT_FINDINGS)
         click.echo(f"{file}: warning: left out of the generated files: {shown}", err=True)
-    outputs: dict[Path, bytes] = {}
-    for target in dict.fromkeys(targets):
-        # CANopenNode's files are OD.h/OD.c unless named: the stack includes "OD.h".
-        target_view = replace(view, name=name or "OD") if target == "canopennode" else view
-        for filename, text in renderer(target)(target_view).items():
-            outputs[Path(outdir) / filename] = with_left_out(filename, text, left_out).encode("utf-8")
+    files: Iterator[tuple[Path, Iterable[bytes]]] = _files(view, targets, name, Path(outdir), left_out)
     if depfile:
         pins = pin_file_for(file, pin_file)
-        inputs = [file, *([str(pins)] if pins else []), *extra_inputs]
-        rule = " ".join(_escape(str(p)) for p in outputs) + ": " + " ".join(_escape(i) for i in inputs) + "\n"
-        outputs[Path(depfile)] = rule.encode("utf-8")
-    write_outputs(outputs)  # everything rendered before anything is written, and all of it or nothing
+        files = _with_depfile(files, Path(depfile), [file, *([str(pins)] if pins else []), *extra_inputs])
+    # Each file is rendered as it is written; a failure anywhere leaves every output as it was.
+    write_outputs(files)
     sys.exit(EXIT_OK)
 
 
@@ -134,6 +128,33 @@ def _view(
         view, pdos = without_failed_pdos(view)
         left_out += pdos
     return view, left_out
+
+
+def _files(
+    view: DeviceView, targets: tuple[str, ...], name: str | None, outdir: Path, left_out: list[str]
+) -> Iterator[tuple[Path, Iterator[bytes]]]:
+    """Every target's files, each as its encoded text in pieces (rendered when read), in target order."""
+    from ..render import streamer
+    from ..render.notes import left_out_note
+
+    for target in dict.fromkeys(targets):
+        # CANopenNode's files are OD.h/OD.c unless named: the stack includes "OD.h".
+        target_view = replace(view, name=name or "OD") if target == "canopennode" else view
+        for filename, pieces in streamer(target)(target_view).items():
+            text = itertools.chain([left_out_note(filename, left_out)], pieces)
+            yield outdir / filename, (piece.encode("utf-8") for piece in text)
+
+
+def _with_depfile(
+    files: Iterator[tuple[Path, Iterable[bytes]]], depfile: Path, inputs: list[str]
+) -> Iterator[tuple[Path, Iterable[bytes]]]:
+    """`files`, then a Makefile-style depfile naming them as the targets of `inputs`."""
+    written = []
+    for path, content in files:
+        written.append(path)
+        yield path, content
+    rule = " ".join(_escape(str(p)) for p in written) + ": " + " ".join(_escape(i) for i in inputs) + "\n"
+    yield depfile, [rule.encode("utf-8")]
 
 
 def _escape(path: str) -> str:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import importlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Iterator
 from functools import cache
 
 import jinja2
@@ -11,10 +11,12 @@ import jinja2
 from ..resources import resource_dir
 from . import escape, prose
 
-# target name → module in this package with `render(view) -> dict[str, str]`
+# target name → module in this package with `stream(view) -> dict[str, Iterable[str]]` (file name → its text
+# in pieces, produced as they are read) and `render(view) -> dict[str, str]` (the same, whole)
 TARGETS = {"c": "c", "rust": "rust", "python": "python", "markdown": "markdown", "canopennode": "canopennode"}
 
 Renderer = Callable[..., dict[str, str]]
+Streamer = Callable[..., dict[str, Iterable[str]]]
 
 
 @cache
@@ -42,21 +44,37 @@ def environment() -> jinja2.Environment:
     return env
 
 
-def render_template(name: str, **context: object) -> str:
-    """A template's text, joined in batches as it is generated: a large object dictionary's output is
-    tens of MB, and holding all of Jinja's small pieces at once would take many times that."""
-    whole: list[str] = []
+def stream_template(name: str, **context: object) -> Iterator[str]:
+    """A template's text in pieces of a few thousand of Jinja's, as it is generated: a large object
+    dictionary's output is hundreds of MB, which need never be held at once."""
     batch: list[str] = []
     for piece in environment().get_template(name).generate(**context):
         batch.append(piece)
         if len(batch) == 4096:
-            whole.append("".join(batch))
+            yield "".join(batch)
             batch.clear()
-    whole.append("".join(batch))
-    return "".join(whole)
+    yield "".join(batch)
+
+
+def render_template(name: str, **context: object) -> str:
+    """A template's text."""
+    return "".join(stream_template(name, **context))
+
+
+def whole(files: dict[str, Iterable[str]]) -> dict[str, str]:
+    """Streamed files, each joined into one text."""
+    return {name: "".join(pieces) for name, pieces in files.items()}
 
 
 def renderer(target: str) -> Renderer:
+    """The target's `render`: every file's whole text."""
     module = importlib.import_module(f"{__name__}.{TARGETS[target]}")
     render: Renderer = module.render
     return render
+
+
+def streamer(target: str) -> Streamer:
+    """The target's `stream`: every file's text in pieces, rendered as they are read."""
+    module = importlib.import_module(f"{__name__}.{TARGETS[target]}")
+    stream: Streamer = module.stream
+    return stream

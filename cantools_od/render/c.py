@@ -25,11 +25,12 @@ generated names collide whatever the identifiers are.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 from ..model import AccessType, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
-from . import render_template
+from . import stream_template, whole
 from .c_pdo import CPdo, Helpers, c_pdos
 from .c_types import Storage, constant, storage, utf16_units
 
@@ -287,10 +288,15 @@ def context(view: DeviceView) -> Context:
     )
 
 
-def render(view: DeviceView) -> dict[str, str]:
-    """NAME.h and NAME.c."""
+def stream(view: DeviceView) -> dict[str, Iterable[str]]:
+    """NAME.h and NAME.c, rendered as they are read."""
     ctx = context(view)
     return {
-        f"{view.name}.h": render_template("c/header.h.j2", c=ctx),
-        f"{view.name}.c": render_template("c/source.c.j2", c=ctx),
+        f"{view.name}.h": stream_template("c/header.h.j2", c=ctx),
+        f"{view.name}.c": stream_template("c/source.c.j2", c=ctx),
     }
+
+
+def render(view: DeviceView) -> dict[str, str]:
+    """NAME.h and NAME.c."""
+    return whole(stream(view))

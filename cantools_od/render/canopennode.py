@@ -11,12 +11,13 @@ from __future__ import annotations
 
 import math
 import struct
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
 from ..model import ValueKind
 from ..views.canopennode import ARR, REC, VAR, NodeEntry, NodeObject, NodeView
 from ..views.codegen import DeviceView
-from . import environment
+from . import stream_template, whole
 
 Fields = tuple[tuple[str, str], ...]  # (field, C value) pairs of one OD_obj_*_t
 Described = tuple[tuple["Stored", ...], tuple[Fields, ...]]
@@ -234,17 +235,25 @@ def _is_array(view: NodeView, index: int) -> bool:
     return any(o.index == index for o in view.arrays)
 
 
-def render_node_view(view: NodeView) -> dict[str, str]:
-    env = environment()
+def stream_node_view(view: NodeView) -> dict[str, Iterable[str]]:
     ctx = context(view)
     return {
-        f"{view.name}.h": env.get_template("canopennode/OD.h.j2").render(ctx=ctx),
-        f"{view.name}.c": env.get_template("canopennode/OD.c.j2").render(ctx=ctx),
+        f"{view.name}.h": stream_template("canopennode/OD.h.j2", ctx=ctx),
+        f"{view.name}.c": stream_template("canopennode/OD.c.j2", ctx=ctx),
     }
+
+
+def render_node_view(view: NodeView) -> dict[str, str]:
+    return whole(stream_node_view(view))
+
+
+def stream(view: DeviceView) -> dict[str, Iterable[str]]:
+    """`gen -t canopennode`, rendered as it is read: the device must have passed the canopennode lint profile."""
+    from ..views.canopennode import build_node_view
+
+    return stream_node_view(build_node_view(view.device, view.name, view.source_name))
 
 
 def render(view: DeviceView) -> dict[str, str]:
     """`gen -t canopennode`: the device must have passed the canopennode lint profile."""
-    from ..views.canopennode import build_node_view
-
-    return render_node_view(build_node_view(view.device, view.name, view.source_name))
+    return whole(stream(view))

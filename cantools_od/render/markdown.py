@@ -14,11 +14,12 @@ that every link in the document reaches its heading; each PDO's section is heade
 from __future__ import annotations
 
 import unicodedata
+from collections.abc import Iterable
 from pathlib import Path
 
 from ..model import DataType, Device, NodeIdExpr, Object, RawValue, TimeValue, ValueKind, Variable
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import render_template
+from . import stream_template, whole
 from .escape import markdown_cell, markdown_plain, markdown_text
 from .prose import count
 
@@ -26,9 +27,13 @@ NONE = "\u2014"
 VALID_BIT = 0x80000000
 
 
+def stream(view: DeviceView) -> dict[str, Iterable[str]]:
+    """`<name>.md`, rendered as it is read."""
+    return {f"{view.name}.md": stream_template("markdown/reference.md.j2", d=_document(view))}
+
+
 def render(view: DeviceView) -> dict[str, str]:
-    text = render_template("markdown/reference.md.j2", d=_document(view))
-    return {f"{view.name}.md": text}
+    return whole(stream(view))
 
 
 def heading(index: int, name: str) -> str:

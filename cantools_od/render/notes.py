@@ -11,10 +11,10 @@ from .escape import c_comment, line_comment, markdown_text
 HEADLINE = "cantools-od gen --keep-going left out what errors in the input touch:"
 
 
-def with_left_out(filename: str, text: str, left_out: list[str]) -> str:
-    """`text` with a comment naming each item of `left_out` put before it; `text` itself when nothing was."""
+def left_out_note(filename: str, left_out: list[str]) -> str:
+    """The comment naming each item of `left_out` that goes before a file's text; "" when nothing was."""
     if not left_out:
-        return text
+        return ""
     suffix = PurePath(filename).suffix.lower()
     if suffix in (".c", ".h", ".cpp", ".hpp", ".cc"):
         lines = [f"/* {c_comment(line)} */" for line in [HEADLINE, *(f"- {item}" for item in left_out)]]
@@ -23,4 +23,4 @@ def with_left_out(filename: str, text: str, left_out: list[str]) -> str:
     else:  # Rust, Python, TOML and other languages with line comments
         mark = "//" if suffix == ".rs" else "#"
         lines = [f"{mark} {line_comment(line)}" for line in [HEADLINE, *(f"- {item}" for item in left_out)]]
-    return "\n".join(lines) + "\n" + text
+    return "\n".join(lines) + "\n"

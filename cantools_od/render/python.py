@@ -13,6 +13,7 @@ and to talk to a node. It holds:
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
@@ -20,7 +21,7 @@ from importlib import resources
 from ..interop import OdVariable, od_objects
 from ..model import AccessType, Device, NodeIdExpr, ValueKind, standard_type
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import render_template
+from . import stream_template, whole
 from .prose import count
 from .py_text import (
     doc_text,
@@ -89,9 +90,13 @@ def runtime() -> str:
     return source[start:].removesuffix("\n")
 
 
+def stream(view: DeviceView) -> dict[str, Iterable[str]]:
+    """`<name>.py`, rendered as it is read."""
+    return {f"{view.name}.py": stream_template("python/module.py.j2", m=_module(view), runtime=runtime())}
+
+
 def render(view: DeviceView) -> dict[str, str]:
-    text = render_template("python/module.py.j2", m=_module(view), runtime=runtime())
-    return {f"{view.name}.py": text}
+    return whole(stream(view))
 
 
 def source_name(view: DeviceView) -> str:

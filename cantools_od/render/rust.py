@@ -10,11 +10,12 @@ Names come from `cantools_od.identifiers`; layouts follow rustfmt (see `rust_lay
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from ..model import STANDARD_TYPES, NodeIdExpr, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
-from . import escape, render_template, rust_layout
+from . import escape, rust_layout, stream_template, whole
 from .rust_names import TypeNames, lower, upper
 from .rust_pdo import RustPdo, pdos
 from .rust_types import byte_string, in_type_range, node_expr, rust_type, scalar_literal, zero
@@ -241,15 +242,14 @@ def module(view: DeviceView) -> RustModule:
     return RustModule(view, node_id, objects, entries, rust_pdos, data_types)
 
 
+def stream(view: DeviceView) -> dict[str, Iterable[str]]:
+    """`<name>.rs` for the view, rendered as it is read."""
+    context = module(view)
+    product = view.device.device_info.product_name or ""
+    text = stream_template("rust/module.rs.j2", m=context, source=view.source_name, product=product, fmt=rust_layout)
+    return {f"{view.name}.rs": text}
+
+
 def render(view: DeviceView) -> dict[str, str]:
     """`<name>.rs` for the view."""
-    context = module(view)
-    source = view.source_name
-    text = render_template(
-        "rust/module.rs.j2",
-        m=context,
-        source=source,
-        product=view.device.device_info.product_name or "",
-        fmt=rust_layout,
-    )
-    return {f"{view.name}.rs": text}
+    return whole(stream(view))

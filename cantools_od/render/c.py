@@ -25,8 +25,9 @@ generated names collide whatever the identifiers are.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
+from typing import Generic, TypeVar
 
 from ..model import AccessType, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
@@ -43,6 +44,7 @@ ACCESS_CODES = {
     AccessType.CONST: ("CONST", 0x11),
 }
 ARRAY_MEMBER = "values"
+T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -88,6 +90,26 @@ class Row:
     size: str
 
 
+class Each(Generic[T]):
+    """Items made each time they are iterated, one object at a time: the per-entry parts of a large
+    object dictionary's files would take many times its size if all were held at once."""
+
+    def __init__(self, make: Callable[[], Iterator[T]], length: int | None = None) -> None:
+        self._make = make
+        self._length = length
+
+    def __iter__(self) -> Iterator[T]:
+        return self._make()
+
+    def __bool__(self) -> bool:
+        return bool(self._length) if self._length is not None else next(self._make(), None) is not None
+
+    def __len__(self) -> int:
+        if self._length is None:
+            raise TypeError("the number of items is not known before they are made")
+        return self._length
+
+
 @dataclass(frozen=True)
 class Context:
     name: str
@@ -100,14 +122,25 @@ class Context:
     node_id: int | None
     max_dlc: int
     access_codes: tuple[tuple[str, int], ...]
-    blocks: tuple[Block, ...]
-    records: tuple[Record, ...]
-    od_members: tuple[Member, ...]
-    init: tuple[str, ...]
+    blocks: Each[Block]
+    records: Each[Record]
+    od_members: Each[Member]
+    init: Each[str]
     uses_node_id: bool
-    rows: tuple[Row, ...]
+    rows: Each[Row]
     pdos: tuple[CPdo, ...]
     helpers: Helpers
+
+
+@dataclass(frozen=True)
+class Placed:
+    """An object's storage: its struct (RECORD/ARRAY), its member of `struct NAME_od`, its lines of
+    NAME_init and its rows of the object table."""
+
+    record: Record | None
+    member: Member | None
+    init: list[str]
+    rows: list[Row]
 
 
 class _Builder:
@@ -115,26 +148,20 @@ class _Builder:
         base = view.name.rstrip("_")
         self.prefix = base + "_"
         self.macro = base.upper() + "_"
-        self.blocks: list[Block] = []
-        self.records: list[Record] = []
-        self.od_members: list[Member] = []
-        self.init: list[str] = []
-        self.rows: list[Row] = []
 
-    def add(self, obj: ObjectView) -> None:
+    def blocks(self, obj: ObjectView) -> list[Block]:
         entries = sorted(obj.entries, key=lambda e: e.subindex)
-        title = f"{obj.index:04X} {obj.name} ({obj.kind.name})"
+        title = _title(obj)
         macros = [Macro(self._name(obj.identifier, "INDEX"), f"0x{obj.index:04X}u")]
         if obj.is_var:
             macros += [m for e in entries for m in self.entry_macros(e)]
-            self.blocks.append(Block(title, tuple(macros)))
-        else:
-            self.blocks.append(Block(title, tuple(macros)))
-            for e in entries:
-                head = Macro(self._name(e.flat, "INDEX"), f"0x{e.index:04X}u")
-                where = f"{e.index:04X}sub{e.subindex:X} {e.name}"
-                self.blocks.append(Block(where, (head, *self.entry_macros(e))))
-        self.place(obj, entries, title)
+            return [Block(title, tuple(macros))]
+        blocks = [Block(title, tuple(macros))]
+        for e in entries:
+            head = Macro(self._name(e.flat, "INDEX"), f"0x{e.index:04X}u")
+            where = f"{e.index:04X}sub{e.subindex:X} {e.name}"
+            blocks.append(Block(where, (head, *self.entry_macros(e))))
+        return blocks
 
     def _name(self, identifier: str, suffix: str) -> str:
         return f"{self.macro}{identifier.rstrip('_').upper()}_{suffix}"
@@ -169,26 +196,31 @@ class _Builder:
                 macros.append(Macro(name, omitted=f"{name} is not defined: {spelled.reason}"))
         return macros
 
-    def place(self, obj: ObjectView, entries: list[EntryView], title: str) -> None:
+    def place(self, obj: ObjectView) -> Placed:
         """Storage in `struct NAME_od`, the defaults in NAME_init and the rows of the object table."""
+        entries = sorted(obj.entries, key=lambda e: e.subindex)
+        title = _title(obj)
         held = {e.subindex: storage(e.data_type, e.default) for e in entries}
         paths: dict[int, str] = {}
+        record = member = None
         if obj.is_var:
             var = held.get(0)
             if var is not None:
-                self.od_members.append(Member(var.ctype, obj.identifier, var.suffix, title))
+                member = Member(var.ctype, obj.identifier, var.suffix, title)
                 paths[0] = obj.identifier
         else:
             members, paths = self._record(obj, entries, held)
             if members:
                 struct = f"{self.prefix}od_{obj.identifier}"
-                self.records.append(Record(struct, title, tuple(members)))
-                self.od_members.append(Member(f"struct {struct}", obj.identifier, "", title))
+                record = Record(struct, title, tuple(members))
+                member = Member(f"struct {struct}", obj.identifier, "", title)
+        init: list[str] = []
+        rows: list[Row] = []
         for e in entries:
             path, place = paths.get(e.subindex), held.get(e.subindex)
             if path is not None and place is not None:
-                self.init += self._init(e, path, place)
-            self.rows.append(
+                init += self._init(e, path, place)
+            rows.append(
                 Row(
                     index=e.index,
                     subindex=e.subindex,
@@ -200,6 +232,7 @@ class _Builder:
                     size=place.sizeof if path and place else "0u",
                 )
             )
+        return Placed(record, member, init, rows)
 
     def _record(
         self, obj: ObjectView, entries: list[EntryView], held: dict[int, Storage | None]
@@ -259,13 +292,21 @@ def _type_name(e: EntryView) -> str:
     return e.data_type.name if e.data_type else "unknown data type"
 
 
+def _title(obj: ObjectView) -> str:
+    return f"{obj.index:04X} {obj.name} ({obj.kind.name})"
+
+
 def context(view: DeviceView) -> Context:
+    """What the templates lay out; the per-object parts are made as the templates read them."""
     builder = _Builder(view)
-    for obj in sorted(view.objects, key=lambda o: o.index):
-        builder.add(obj)
+    objects = sorted(view.objects, key=lambda o: o.index)
+
+    def placed() -> Iterator[Placed]:
+        return (builder.place(obj) for obj in objects)
+
+    init = Each(lambda: (line for p in placed() for line in p.init))
     pdos, helpers = c_pdos(view, builder.prefix, builder.macro)
     info = view.device.device_info
-    node_id = view.node_id
     return Context(
         name=view.name,
         prefix=builder.prefix,
@@ -274,15 +315,15 @@ def context(view: DeviceView) -> Context:
         source=view.source_name,
         vendor=info.vendor_name or "",
         product=info.product_name or "",
-        node_id=node_id,
+        node_id=view.node_id,
         max_dlc=(view.max_pdo_bits + 7) // 8,
         access_codes=tuple(ACCESS_CODES.values()),
-        blocks=tuple(builder.blocks),
-        records=tuple(builder.records),
-        od_members=tuple(builder.od_members),
-        init=tuple(builder.init),
-        uses_node_id=any("(node_id)" in line for line in builder.init),
-        rows=tuple(builder.rows),
+        blocks=Each(lambda: (block for obj in objects for block in builder.blocks(obj))),
+        records=Each(lambda: (p.record for p in placed() if p.record is not None)),
+        od_members=Each(lambda: (p.member for p in placed() if p.member is not None)),
+        init=init,
+        uses_node_id=any("(node_id)" in line for line in init),
+        rows=Each(lambda: (row for p in placed() for row in p.rows), sum(len(obj.entries) for obj in objects)),
         pdos=tuple(pdos),
         helpers=helpers,
     )

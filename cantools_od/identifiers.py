@@ -240,6 +240,7 @@ def assign(device: Device, pins: Mapping[str, str] | None = None) -> Identifiers
     members: dict[tuple[int, int], str] = {}
     flats: dict[tuple[int, int], str] = {}
     taken = {name for index, name in pinned_objects.items() if index in device.objects}
+    names: dict[str, str] = {}
     for index in sorted(device.objects):
         obj = device.objects[index]
         name = pinned_objects.get(index)
@@ -251,11 +252,12 @@ def assign(device: Device, pins: Mapping[str, str] | None = None) -> Identifiers
             continue
         local = {pinned_members[index, sub] for sub in obj.subs if (index, sub) in pinned_members}
         for sub in sorted(obj.subs):
-            member = pinned_members.get((index, sub))
+            key = (index, sub)  # one key for both tables, and one string for a member name many objects use
+            member = pinned_members.get(key)
             if member is None:
                 member = _claim(snake_case(obj.subs[sub].name, f"sub_{sub:x}"), str(sub), local)
-            members[index, sub] = member
-            flats[index, sub] = _claim(_join(name, member), f"{index:04x}", taken)
+            members[key] = names.setdefault(member, member)
+            flats[key] = _claim(_join(name, member), f"{index:04x}", taken)
     return Identifiers(objects, members, flats)
 
 

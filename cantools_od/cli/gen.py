@@ -72,6 +72,7 @@ def command(
     PDO that cannot be packed) fails the command with exit 1 and writes nothing; with
     --keep-going the rest is generated and what was left out is listed, in the files'
     header comments and on stderr."""
+    from ..eds.where import damaged_objects
     from ..identifiers import is_identifier, pin_file_for
     from ..model.cia301.pdo import frame_bits
     from ..xdd.reader import refused
@@ -90,11 +91,13 @@ def command(
         report(device.diagnostics, minimum=Severity.ERROR)
         click.echo(f"{file}: error: nothing generated: the file could not be read", err=True)
         sys.exit(EXIT_FINDINGS)
+    damaged = set(damaged_objects(device))
+    device._original = None  # the file's bytes, which only the search for damage needs: gen writes no EDS
     identifiers = identifiers_for(device, file, pin_file)
     extra_inputs = prepare_canopennode(device, file, explain) if "canopennode" in targets else []
     report(device.diagnostics, minimum=Severity.ERROR)
     # PDO code needs the PDOs to be packable; the stack checks PDOs itself.
-    view, left_out = _view(device, base, node_id, identifiers, frame_bits(can_fd), not stack_only)
+    view, left_out = _view(device, damaged, base, node_id, identifiers, frame_bits(can_fd), not stack_only)
     if left_out:
         shown = "; ".join(left_out[:10]) + (f"; and {len(left_out) - 10} more" if len(left_out) > 10 else "")
         if not keep_going:
@@ -112,14 +115,18 @@ def command(
 
 
 def _view(
-    device: Device, base: str, node_id: int | None, identifiers: Identifiers, max_pdo_bits: int, pdo_code: bool
+    device: Device,
+    damaged: set[int],
+    base: str,
+    node_id: int | None,
+    identifiers: Identifiers,
+    max_pdo_bits: int,
+    pdo_code: bool,
 ) -> tuple[DeviceView, list[str]]:
-    """The view to render, and what errors made it leave out (objects, then PDOs)."""
-    from ..eds.where import damaged_objects
+    """The view to render without the `damaged` objects, and what errors made it leave out (objects, then PDOs)."""
     from ..views.codegen import build_view
     from ..views.partial import left_out_objects, without, without_failed_pdos
 
-    damaged = set(damaged_objects(device))
     # Identifiers come from the whole device, so that leaving an object out renames nothing else.
     view = build_view(without(device, damaged), base, node_id, identifiers, max_pdo_bits=max_pdo_bits)
     left_out = left_out_objects(device, damaged)

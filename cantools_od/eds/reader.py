@@ -143,7 +143,7 @@ class _Build:
             self.compact.append((index, match.group(3).lower(), section))
         else:
             collected = collect(section, keys.OBJECT_KEYS, report)
-            fields = {"index": index, "subs": {}, **collected.fields, **collected.common()}
+            fields = {"index": index, "subs": {}, **collected.fields, **collected.common(share_empty=True)}
             obj = assemble(Object, fields, _OBJECT_DEFAULTS)
             device.objects[index] = obj
             self.type_or_defer(obj, None, collected)
@@ -156,7 +156,7 @@ class _Build:
                 collected.extra[spelling] = next(
                     e.value for e in section.entries if keys.normalize(e.key) == spelling.lower()
                 )
-        sub = assemble(SubObject, {**collected.fields, **collected.common()}, _SUB_DEFAULTS)
+        sub = assemble(SubObject, {**collected.fields, **collected.common(share_empty=True)}, _SUB_DEFAULTS)
         parent.subs[subindex] = sub
         self.type_or_defer(parent, sub, collected)
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NoReturn
 
 from ..model import AccessType, ObjectKind, Origin, RawSection
 from ..model.assemble import assemble, field_defaults
@@ -12,6 +12,20 @@ from .report import Report
 from .values import parse_int
 
 _ORIGIN = {**field_defaults(Origin), "keys": {}, "spelled": {}}  # shared empty dicts: never edited in place
+
+
+class _Empty(dict[str, Any]):
+    """The empty `extra` and `comments` that objects and sub-objects without any share: one empty dict
+    each would cost a large file about 160 bytes per section. Being shared, it refuses changes in place
+    (assign a new dict instead)."""
+
+    def _refuse(self, *args: object, **kwargs: object) -> NoReturn:
+        raise TypeError("a shared empty mapping of the model: assign a new dict instead of changing it")
+
+    __setitem__ = __delitem__ = __ior__ = setdefault = update = pop = popitem = clear = _refuse
+
+
+NONE: dict[str, Any] = _Empty()
 
 
 class Collected:
@@ -26,7 +40,10 @@ class Collected:
         self.origin = origin
         self.deferred: dict[str, Entry] = {}  # typed values, read once the data type is known
 
-    def common(self) -> dict[str, Any]:
+    def common(self, share_empty: bool = False) -> dict[str, Any]:
+        """The fields every section has; with `share_empty`, empty ones are the shared `NONE`."""
+        if share_empty:
+            return {"extra": self.extra or NONE, "comments": self.comments or NONE, "origin": self.origin}
         return {"extra": self.extra, "comments": self.comments, "origin": self.origin}
 
 

@@ -20,6 +20,7 @@ from ..model import (
     NodeIdExpr,
     Object,
     ObjectKind,
+    Origin,
     RawValue,
     Severity,
     TimeValue,
@@ -31,9 +32,12 @@ from ..model.cia301.pdo import CLASSIC_CAN_BITS
 from .pdo import Pdo, pdo_map
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class EntryView:
-    """One value-carrying entry: a VAR (sub-index 0) or a sub-object."""
+    """One value-carrying entry: a VAR (sub-index 0) or a sub-object.
+
+    Slotted, and sharing its values with the model and the identifiers: a large device has
+    hundreds of thousands of entries."""
 
     index: int
     subindex: int
@@ -47,7 +51,12 @@ class EntryView:
     low_limit: int | float | None
     high_limit: int | float | None
     implicit: bool
-    line: int  # where the file describes it, 0 when unknown
+    origin: Origin | None  # the entry's section (a VAR's or sub-object's, else its object's)
+
+    @property
+    def line(self) -> int:
+        """Where the file describes it, 0 when unknown."""
+        return self.origin.key("ParameterName").line if self.origin else 0
 
     @property
     def kind(self) -> ValueKind | None:
@@ -85,7 +94,7 @@ class EntryView:
         return None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class ObjectView:
     index: int
     name: str
@@ -169,7 +178,6 @@ def _number(value: Value | None) -> int | float | None:
 
 def _entry(device: Device, ids: Identifiers, obj: Object, subindex: int, var: Variable) -> EntryView:
     value = var.parameter_value if var.parameter_value is not None else var.default
-    origin = var.origin or obj.origin
     return EntryView(
         index=obj.index,
         subindex=subindex,
@@ -183,7 +191,7 @@ def _entry(device: Device, ids: Identifiers, obj: Object, subindex: int, var: Va
         low_limit=_number(var.low_limit),
         high_limit=_number(var.high_limit),
         implicit=getattr(var, "implicit", False),
-        line=origin.key("ParameterName").line if origin else 0,
+        origin=var.origin or obj.origin,
     )
 
 
@@ -201,22 +209,21 @@ def build_view(
         device = device.model_copy(update={"objects": enabled})
     ids = identifiers or assign(device)
     objects: list[ObjectView] = []
-    by_key: dict[tuple[int, int], EntryView] = {}
+    by_index: dict[int, ObjectView] = {}
     for obj in device.objects.values():
         if obj.kind in (ObjectKind.NULL, ObjectKind.DEFTYPE):
             continue
         pairs = list(obj.subs.items()) if obj.has_subs else [(0, obj)]
         entries = tuple(_entry(device, ids, obj, sub, var) for sub, var in pairs)
-        for entry in entries:
-            by_key[(entry.index, entry.subindex)] = entry
         objects.append(ObjectView(obj.index, obj.name, ids.object(obj.index), obj.kind, entries))
+        by_index[obj.index] = objects[-1]
     problems: list[Diagnostic] = []
     failed: set[str] = set()
     pdos: list[PdoView] = []
     for pdo in pdo_map(device, node_id, ids):
         view_entries = []
         for mapped in pdo.entries:
-            target = None if mapped.is_dummy else by_key.get((mapped.index, mapped.subindex))
+            target = None if mapped.is_dummy else _find(by_index.get(mapped.index), mapped.subindex)
             problem = _pdo_problem(pdo, mapped.index, mapped.subindex, mapped.bit_length, target, mapped.is_dummy)
             if problem:
                 problems.append(_diagnostic(device, pdo, problem))
@@ -235,6 +242,13 @@ def build_view(
     return DeviceView(
         name, device, ids, tuple(objects), tuple(pdos), resolved, tuple(problems), max_pdo_bits, frozenset(failed)
     )
+
+
+def _find(obj: ObjectView | None, subindex: int) -> EntryView | None:
+    """The object's entry at `subindex`, None when it has none."""
+    if obj is None:
+        return None
+    return next((e for e in obj.entries if e.subindex == subindex), None)
 
 
 def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryView | None, dummy: bool) -> str:

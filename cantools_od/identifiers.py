@@ -52,6 +52,7 @@ table with a pin for every object and sub-object; `load_pins` reads it back.
 
 from __future__ import annotations
 
+import bisect
 import re
 import tomllib
 import unicodedata
@@ -173,13 +174,31 @@ def _key(index: int, subindex: int | None = None) -> str:
     return f"{index:04X}" if subindex is None else f"{index:04X}sub{subindex:X}"
 
 
+class _Subs:
+    """An object's sub-objects: their sub-indices in ascending order, and their member and flat
+    identifiers in the same order. Lists, not tables keyed by (index, sub-index): a large device
+    has hundreds of thousands of sub-objects."""
+
+    __slots__ = ("flats", "members", "subindices")
+
+    def __init__(self) -> None:
+        self.subindices: list[int] = []
+        self.members: list[str] = []
+        self.flats: list[str] = []
+
+    def position(self, index: int, subindex: int) -> int:
+        found = bisect.bisect_left(self.subindices, subindex)
+        if found == len(self.subindices) or self.subindices[found] != subindex:
+            raise KeyError((index, subindex))
+        return found
+
+
 class Identifiers:
     """The identifiers of one device's objects and sub-objects; made by `assign`."""
 
-    def __init__(self, objects: dict[int, str], members: dict[tuple[int, int], str], flats: dict[tuple[int, int], str]):
+    def __init__(self, objects: dict[int, str], subs: dict[int, _Subs]):
         self._objects = objects
-        self._members = members
-        self._flats = flats
+        self._subs = subs  # objects with sub-objects only
 
     def object(self, index: int) -> str:
         """The object's identifier, unique among object and flat identifiers."""
@@ -187,18 +206,28 @@ class Identifiers:
 
     def member(self, index: int, subindex: int) -> str:
         """The sub-object's identifier, unique within its object."""
-        return self._members[index, subindex]
+        subs = self._subs.get(index)
+        if subs is None:
+            raise KeyError((index, subindex))
+        return subs.members[subs.position(index, subindex)]
 
     def flat(self, index: int, subindex: int) -> str:
         """`<object>_<member>`, or the object's identifier for sub-index 0 of a VAR; unique in the device."""
-        return self._flats[index, subindex]
+        subs = self._subs.get(index)
+        if subs is None:
+            if subindex == 0 and index in self._objects:
+                return self._objects[index]
+            raise KeyError((index, subindex))
+        return subs.flats[subs.position(index, subindex)]
 
     def items(self) -> Iterator[tuple[str, str]]:
         """(pin key, identifier) of every object and sub-object in (index, sub-index) order."""
-        entries = [((index, -1), _key(index), name) for index, name in self._objects.items()]
-        entries += [(address, _key(*address), name) for address, name in self._members.items()]
-        for _, key, name in sorted(entries):
-            yield key, name
+        for index in sorted(self._objects):
+            yield _key(index), self._objects[index]
+            subs = self._subs.get(index)
+            if subs is not None:
+                for subindex, member in zip(subs.subindices, subs.members, strict=True):
+                    yield _key(index, subindex), member
 
     def to_toml(self) -> str:
         """A pin file for every object and sub-object; `load_pins` reads it back."""
@@ -237,8 +266,7 @@ def assign(device: Device, pins: Mapping[str, str] | None = None) -> Identifiers
     """Identifiers for every object and sub-object of `device`, following the rule of this module."""
     pinned_objects, pinned_members = _check_pins(pins or {})
     objects: dict[int, str] = {}
-    members: dict[tuple[int, int], str] = {}
-    flats: dict[tuple[int, int], str] = {}
+    subs: dict[int, _Subs] = {}
     taken = {name for index, name in pinned_objects.items() if index in device.objects}
     names: dict[str, str] = {}
     for index in sorted(device.objects):
@@ -248,17 +276,17 @@ def assign(device: Device, pins: Mapping[str, str] | None = None) -> Identifiers
             name = _claim(snake_case(obj.name, f"object_{index:04x}"), f"{index:04x}", taken)
         objects[index] = name
         if not obj.has_subs:
-            flats[index, 0] = name
             continue
         local = {pinned_members[index, sub] for sub in obj.subs if (index, sub) in pinned_members}
+        found = subs[index] = _Subs()
         for sub in sorted(obj.subs):
-            key = (index, sub)  # one key for both tables, and one string for a member name many objects use
-            member = pinned_members.get(key)
+            member = pinned_members.get((index, sub))
             if member is None:
                 member = _claim(snake_case(obj.subs[sub].name, f"sub_{sub:x}"), str(sub), local)
-            members[key] = names.setdefault(member, member)
-            flats[key] = _claim(_join(name, member), f"{index:04x}", taken)
-    return Identifiers(objects, members, flats)
+            found.subindices.append(sub)
+            found.members.append(names.setdefault(member, member))  # one string for a name many objects use
+            found.flats.append(_claim(_join(name, member), f"{index:04x}", taken))
+    return Identifiers(objects, subs)
 
 
 def load_pins(path: str | Path) -> dict[str, str]:

@@ -134,13 +134,15 @@ class Context:
 
 @dataclass(frozen=True)
 class Placed:
-    """An object's storage: its struct (RECORD/ARRAY), its member of `struct NAME_od`, its lines of
-    NAME_init and its rows of the object table."""
+    """An object's storage: its struct (RECORD/ARRAY), its member of `struct NAME_od`, and where each
+    entry's value is (`paths`, `held`), from which its lines of NAME_init and its rows of the object
+    table follow."""
 
+    entries: list[EntryView]
+    held: dict[int, Storage | None]
+    paths: dict[int, str]
     record: Record | None
     member: Member | None
-    init: list[str]
-    rows: list[Row]
 
 
 class _Builder:
@@ -197,7 +199,7 @@ class _Builder:
         return macros
 
     def place(self, obj: ObjectView) -> Placed:
-        """Storage in `struct NAME_od`, the defaults in NAME_init and the rows of the object table."""
+        """Storage in `struct NAME_od`."""
         entries = sorted(obj.entries, key=lambda e: e.subindex)
         title = _title(obj)
         held = {e.subindex: storage(e.data_type, e.default) for e in entries}
@@ -214,25 +216,29 @@ class _Builder:
                 struct = f"{self.prefix}od_{obj.identifier}"
                 record = Record(struct, title, tuple(members))
                 member = Member(f"struct {struct}", obj.identifier, "", title)
-        init: list[str] = []
-        rows: list[Row] = []
-        for e in entries:
-            path, place = paths.get(e.subindex), held.get(e.subindex)
+        return Placed(entries, held, paths, record, member)
+
+    def init(self, placed: Placed) -> Iterator[str]:
+        """The object's lines of NAME_init: its defaults."""
+        for e in placed.entries:
+            path, place = placed.paths.get(e.subindex), placed.held.get(e.subindex)
             if path is not None and place is not None:
-                init += self._init(e, path, place)
-            rows.append(
-                Row(
-                    index=e.index,
-                    subindex=e.subindex,
-                    access=self._access(e),
-                    data_type=e.data_type.index if e.data_type else 0,
-                    mappable=e.pdo_mappable,
-                    bits=place.bits if place is not None else (e.bits or 0),
-                    offset=f"offsetof(struct {self.prefix}od, {path})" if path else "0u",
-                    size=place.sizeof if path and place else "0u",
-                )
+                yield from self._init(e, path, place)
+
+    def rows(self, placed: Placed) -> Iterator[Row]:
+        """The object's rows of the object table."""
+        for e in placed.entries:
+            path, place = placed.paths.get(e.subindex), placed.held.get(e.subindex)
+            yield Row(
+                index=e.index,
+                subindex=e.subindex,
+                access=self._access(e),
+                data_type=e.data_type.index if e.data_type else 0,
+                mappable=e.pdo_mappable,
+                bits=place.bits if place is not None else (e.bits or 0),
+                offset=f"offsetof(struct {self.prefix}od, {path})" if path else "0u",
+                size=place.sizeof if path and place else "0u",
             )
-        return Placed(record, member, init, rows)
 
     def _record(
         self, obj: ObjectView, entries: list[EntryView], held: dict[int, Storage | None]
@@ -304,7 +310,7 @@ def context(view: DeviceView) -> Context:
     def placed() -> Iterator[Placed]:
         return (builder.place(obj) for obj in objects)
 
-    init = Each(lambda: (line for p in placed() for line in p.init))
+    init = Each(lambda: (line for p in placed() for line in builder.init(p)))
     pdos, helpers = c_pdos(view, builder.prefix, builder.macro)
     info = view.device.device_info
     return Context(
@@ -323,7 +329,7 @@ def context(view: DeviceView) -> Context:
         od_members=Each(lambda: (p.member for p in placed() if p.member is not None)),
         init=init,
         uses_node_id=any("(node_id)" in line for line in init),
-        rows=Each(lambda: (row for p in placed() for row in p.rows), sum(len(obj.entries) for obj in objects)),
+        rows=Each(lambda: (row for p in placed() for row in builder.rows(p)), sum(obj.entry_count for obj in objects)),
         pdos=tuple(pdos),
         helpers=helpers,
     )

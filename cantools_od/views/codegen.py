@@ -100,7 +100,24 @@ class ObjectView:
     name: str
     identifier: str
     kind: ObjectKind
-    entries: tuple[EntryView, ...]  # the VAR itself, or its sub-objects in sub-index order
+    source: Object = field(repr=False, compare=False)
+    device: Device = field(repr=False, compare=False)
+    identifiers: Identifiers = field(repr=False, compare=False)
+
+    @property
+    def entries(self) -> tuple[EntryView, ...]:
+        """The VAR itself, or its sub-objects in sub-index order.
+
+        Made from the model each time they are asked for, not kept: the entries of a large device
+        would cost more than its model. Renderers go through the objects one at a time."""
+        obj = self.source
+        pairs = obj.subs.items() if obj.has_subs else [(0, obj)]
+        return tuple(_entry(self.device, self.identifiers, obj, sub, var) for sub, var in pairs)
+
+    @property
+    def entry_count(self) -> int:
+        """How many entries there are, without making them."""
+        return len(self.source.subs) if self.source.has_subs else 1
 
     @property
     def is_var(self) -> bool:
@@ -213,9 +230,7 @@ def build_view(
     for obj in device.objects.values():
         if obj.kind in (ObjectKind.NULL, ObjectKind.DEFTYPE):
             continue
-        pairs = list(obj.subs.items()) if obj.has_subs else [(0, obj)]
-        entries = tuple(_entry(device, ids, obj, sub, var) for sub, var in pairs)
-        objects.append(ObjectView(obj.index, obj.name, ids.object(obj.index), obj.kind, entries))
+        objects.append(ObjectView(obj.index, obj.name, ids.object(obj.index), obj.kind, obj, device, ids))
         by_index[obj.index] = objects[-1]
     problems: list[Diagnostic] = []
     failed: set[str] = set()

@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable, Iterable, Iterator
 from functools import cache
+from typing import Generic, TypeVar
 
 import jinja2
 
@@ -17,6 +18,27 @@ TARGETS = {"c": "c", "rust": "rust", "python": "python", "markdown": "markdown",
 
 Renderer = Callable[..., dict[str, str]]
 Streamer = Callable[..., dict[str, Iterable[str]]]
+T = TypeVar("T")
+
+
+class Each(Generic[T]):
+    """Items made each time they are iterated, one object at a time: the per-entry parts of a large
+    object dictionary's files would take many times its size if all were held at once."""
+
+    def __init__(self, make: Callable[[], Iterator[T]], length: int | None = None) -> None:
+        self._make = make
+        self._length = length
+
+    def __iter__(self) -> Iterator[T]:
+        return self._make()
+
+    def __bool__(self) -> bool:
+        return bool(self._length) if self._length is not None else next(self._make(), None) is not None
+
+    def __len__(self) -> int:
+        if self._length is None:
+            raise TypeError("the number of items is not known before they are made")
+        return self._length
 
 
 @cache

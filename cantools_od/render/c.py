@@ -25,13 +25,12 @@ generated names collide whatever the identifiers are.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
-from typing import Generic, TypeVar
 
 from ..model import AccessType, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
-from . import stream_template, whole
+from . import Each, stream_template, whole
 from .c_pdo import CPdo, Helpers, c_pdos
 from .c_types import Storage, constant, storage, utf16_units
 
@@ -44,7 +43,6 @@ ACCESS_CODES = {
     AccessType.CONST: ("CONST", 0x11),
 }
 ARRAY_MEMBER = "values"
-T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -88,26 +86,6 @@ class Row:
     bits: int
     offset: str
     size: str
-
-
-class Each(Generic[T]):
-    """Items made each time they are iterated, one object at a time: the per-entry parts of a large
-    object dictionary's files would take many times its size if all were held at once."""
-
-    def __init__(self, make: Callable[[], Iterator[T]], length: int | None = None) -> None:
-        self._make = make
-        self._length = length
-
-    def __iter__(self) -> Iterator[T]:
-        return self._make()
-
-    def __bool__(self) -> bool:
-        return bool(self._length) if self._length is not None else next(self._make(), None) is not None
-
-    def __len__(self) -> int:
-        if self._length is None:
-            raise TypeError("the number of items is not known before they are made")
-        return self._length
 
 
 @dataclass(frozen=True)

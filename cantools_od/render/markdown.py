@@ -19,7 +19,7 @@ from pathlib import Path
 
 from ..model import DataType, Device, NodeIdExpr, Object, RawValue, TimeValue, ValueKind, Variable
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import stream_template, whole
+from . import Each, stream_template, whole
 from .escape import markdown_cell, markdown_plain, markdown_text
 from .prose import count
 
@@ -72,8 +72,9 @@ def _document(view: DeviceView) -> dict[str, object]:
         "summary": _summary(view),
         "pdos": [_pdo(pdo, anchors) for pdo in view.pdos],
         "pdo_rows": [_pdo_row(pdo, anchors) for pdo in view.pdos],
-        "object_rows": [_object_row(view, obj, mapped, anchors) for obj in view.objects],
-        "objects": [_object(view, obj, mapped) for obj in view.objects],
+        # One object at a time, as the template reads them: a large device's rows are not all held.
+        "object_rows": Each(lambda: (_object_row(view, obj, mapped, anchors) for obj in view.objects)),
+        "objects": Each(lambda: (_object(view, obj, mapped) for obj in view.objects)),
     }
 
 

@@ -21,7 +21,7 @@ from importlib import resources
 from ..interop import OdVariable, od_objects
 from ..model import AccessType, Device, NodeIdExpr, ValueKind, standard_type
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
-from . import stream_template, whole
+from . import Each, stream_template, whole
 from .prose import count
 from .py_text import (
     doc_text,
@@ -125,13 +125,16 @@ def _module(view: DeviceView) -> dict[str, object]:
         "source": py_str(source_name(view)),
         "source_text": doc_text(source_name(view)),
         "node_id": repr(view.node_id),
-        "indices": [py_constant(f"INDEX_{obj.identifier.upper()}", py_hex(obj.index)) for obj in view.objects],
-        "subindices": [
-            py_constant(f"SUBINDEX_{entry.flat.upper()}", py_hex(entry.subindex, 2))
-            for obj in view.objects
-            if not obj.is_var
-            for entry in obj.entries
-        ],
+        # Per object or entry: made as the template reads them, so a large device's are not all held.
+        "indices": Each(lambda: (py_constant(f"INDEX_{o.identifier.upper()}", py_hex(o.index)) for o in view.objects)),
+        "subindices": Each(
+            lambda: (
+                py_constant(f"SUBINDEX_{entry.flat.upper()}", py_hex(entry.subindex, 2))
+                for obj in view.objects
+                if not obj.is_var
+                for entry in obj.entries
+            )
+        ),
         "objects": _rows([_object_row(obj) for obj in view.objects], "_OBJECTS: Final[tuple[_Obj, ...]] = "),
         "variables": _rows(
             [_variable_row(rows[e.index, e.subindex]) for obj in view.objects for e in obj.entries],
@@ -143,8 +146,8 @@ def _module(view: DeviceView) -> dict[str, object]:
         if any(info.baud_rates.values())
         else "set()",
         "pdos": [_pdo(view, pdo) for pdo in view.pdos],
-        "device": [_object_property(obj) for obj in view.objects],
-        "groups": [_group(obj) for obj in view.objects if not obj.is_var],
+        "device": Each(lambda: (_object_property(obj) for obj in view.objects)),
+        "groups": Each(lambda: (_group(obj) for obj in view.objects if not obj.is_var)),
     }
 
 

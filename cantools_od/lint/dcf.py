@@ -182,7 +182,10 @@ In the module concept (CiA 306 §6) [SupportedModules] NrOfEntries counts the mo
 M1..Mn, each with an [M<x>ModuleInfo]; [M<x>FixedObjects] and [M<x>SubExtends] count their
 numbered entries in NrOfEntries, and each listed index has its [M<x>Fixed<index>] or
 [M<x>SubExt<index>] section; [ConnectedModules] lists module numbers 1..n.""",
-    "[SupportedModules]\nNrOfEntries=2\n[M1ModuleInfo]\nProductName=Input module",
+    "; also: DIA012 (any module section)\n[SupportedModules]\nNrOfEntries=2\n\n[M1ModuleInfo]\n"
+    "ProductName=Input module",
+    fixed="; also: DIA012 (any module section)\n[SupportedModules]\nNrOfEntries=1\n\n[M1ModuleInfo]\n"
+    "ProductName=Input module",
 )
 def modules(ctx: Context) -> Iterator[Finding]:
     sections = {raw.name.lower(): raw for raw in ctx.device.module_sections}

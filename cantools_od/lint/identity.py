@@ -42,7 +42,8 @@ def plain_int(value: Value | None) -> int | None:
 Every CANopen device implements 1000h (device type), 1001h (error register) and, since CiA 301
 v4.0, 1018h (identity object). Masters read them during boot-up to identify the device; a file
 without them cannot describe a conforming device.""",
-    "[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001\n; no [1018] section",
+    "; no [1018]\n[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001",
+    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n" + ex.identity(),
 )
 def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     listing = ctx.device.mandatory_objects

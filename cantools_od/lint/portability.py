@@ -149,7 +149,11 @@ def compact_record(ctx: Context) -> Iterator[Finding]:
 Data-type definitions (ObjectType 0x5/0x6) are valid CiA 306, but lely dcfchk rejects them ("not
 supported") and python-canopen skips them, failing with a KeyError on their sub-objects. Entries
 typed by them become unreadable there.""",
-    "[0040]\nParameterName=My record type\nObjectType=0x6\nSubNumber=3",
+    "[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\nAccessType=ro\n\n"
+    "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+    "PDOMapping=0",
+    fix_safety="No automatic fix: type the entries by the basic types and delete the definition.",
 )
 def type_definitions(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -230,7 +234,12 @@ def non_ascii(ctx: Context) -> Iterator[Finding]:
 An entry typed by a DEFTYPE/DEFSTRUCT data type (DataType above 001Bh and defined in the file)
 is valid CiA 306, but python-canopen falls back to DOMAIN for it, canmatrix fails and lely does
 not support it. Undefined custom types are reported by EDS080.""",
-    "[0040]\nObjectType=0x5\nDataType=0x0007\n...\n[2000]\nParameterName=Setting\nDataType=0x0040",
+    "; also: DIA005 (the definition the type needs)\n"
+    "[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\nAccessType=ro\n\n"
+    "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0040\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
+    "PDOMapping=0",
+    fix_safety="No automatic fix: type the entry by the basic type the definition stands for.",
 )
 def custom_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects

@@ -19,7 +19,10 @@ The file holds no device description: binary data (a NUL byte), nothing but blan
 without a single `[section]` header, or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
 command refuses such a file with this one line and exit code 2, and never writes to it: a
 formatter that read it as an empty device would otherwise replace it with one.""",
-    "\x7fELF\x02\x01\x01\x00...",
+    "; whole file: device.eds\nIndex,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro",
+    fixed="; file: device.eds\n[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
+    "DefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: nothing is written to a file that is no device description.",
 )
 declare(
     "JSN001",
@@ -29,7 +32,9 @@ declare(
 A file read as JSON (by its `.json` name or its leading `{`) is not a model that `dump --format json`
 or `convert -o x.json` wrote: it does not parse, or its fields are not the model's. Every command
 refuses it with this one line and exit code 2, and never writes to it.""",
-    '{"objects": 5}',
+    '; whole file: device.json\n{"objects": 5}',
+    fixed="; file: device.eds\n; $ cantools-od convert device.eds -o device.json\n; $ cantools-od lint device.json",
+    fix_safety="No automatic fix: write the JSON model with `convert` or `dump --format json`.",
 )
 declare(
     "EDS002",
@@ -104,6 +109,11 @@ declare(
     """
 The file contains bytes that are not UTF-8; it was read as Windows-1252 (or Latin-1). Other
 tools may read those characters differently. Save the file as ASCII or UTF-8.""",
+    "; encoding: cp1252\n; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
+    "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
+    "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: `fmt` writes the file back as UTF-8.",
 )
 declare(
     "EDS101",
@@ -121,7 +131,8 @@ declare(
     "Section header without ']'",
     """
 A line starting with `[` must end its section name with `]`.""",
-    "[1000\nParameterName=Device type",
+    "[2000\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 declare(
     "EDS103",

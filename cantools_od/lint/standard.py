@@ -19,6 +19,7 @@ from ..model.cia301 import cia402, definitions
 from ..model.cia301.definitions import Definition, Entry, Mapping
 from ..model.cia301.pdo import PDO_AREA
 from ..model.cia301.slots import as_int
+from . import examples as ex
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -138,7 +139,8 @@ offer another interface than for the standard object.
 Warning: nothing is read wrong; the description differs from the standard's.
 Fix: none offered (changing ObjectType changes generated code).
 Fixed: `ObjectType=0x9` for 1018h.""",
-    "[1018]\nParameterName=Identity\nObjectType=0x8\nDataType=0x0007\nSubNumber=5",
+    ex.identity().replace("ObjectType=0x9", "ObjectType=0x8", 1),
+    fixed=ex.identity(),
 )
 def array_or_record(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):

@@ -165,7 +165,8 @@ def long_names(ctx: Context) -> Iterator[Finding]:
 Every EDS and DCF has [FileInfo], [DeviceInfo] and [DummyUsage] (CiA 306 §4). Tools read the
 vendor and product identity, supported baud rates and PDO counts from [DeviceInfo]. The object
 lists are checked by EDS019.""",
-    "; no [DeviceInfo] section in the file\n[FileInfo]\nFileName=device.eds",
+    "; no [DeviceInfo]",
+    fixed="[DeviceInfo]\nVendorName=Example\nProductName=Example",
 )
 def missing_sections(ctx: Context) -> Iterator[Finding]:
     device = ctx.device

@@ -122,7 +122,9 @@ sub-entries from the OD list, so an ARRAY's sub-indices must run 0, 1, ... n wit
 ARRAY with no element would be a zero-length C array, which C forbids, and a RECORD needs
 sub-index 0 plus at least one member. Fix: add the missing sub-indices (or use a RECORD, whose
 sub-indices may have gaps).""",
-    ex.record(0x2000, "Gains", {0: (*_COUNT[:3], 3), 1: _GAIN, 3: _GAIN}).replace("ObjectType=0x9", "ObjectType=0x8", 1),
+    ex.record(0x2000, "Gains", {0: (*_COUNT[:3], 3), 1: _GAIN, 3: _GAIN}).replace(
+        "ObjectType=0x9", "ObjectType=0x8", 1
+    ),
     fixed=_ARRAY,
 )
 def array_shape(ctx: Context) -> Iterator[Finding]:
@@ -250,7 +252,8 @@ def _consecutive(ctx: Context, label: str, objects: list[Object]) -> Iterator[Fi
 The generator writes every default into C initializers. A DefaultValue that could not be read
 as the entry's type, or a REAL32 beyond the float range, has no C spelling. Fix: write the
 value in the entry's type.""",
-    "; also: EDS030 (the value is not a REAL32)\n" + "[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e40\nPDOMapping=0",
+    "; also: EDS030 (the value is not a REAL32)\n"
+    + "[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e40\nPDOMapping=0",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e30\nPDOMapping=0",
 )
 def unstorable_default(ctx: Context) -> Iterator[Finding]:
@@ -277,8 +280,10 @@ CANopenNode stores `$NODEID+n` as n: the stack adds the node-ID itself, but only
 COB-IDs it manages (1014h EMCY, 1200h-12FFh SDO, 1400h-15FFh RPDO, 1800h-19FFh TPDO, when they
 hold their pre-defined value). Elsewhere the device would see n alone. Fix: write the value the
 device needs, or set it at run time in the application.""",
-    "[2000]\nParameterName=Reply COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=$NODEID+0x700\nPDOMapping=0",
-    fixed="[2000]\nParameterName=Reply COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0x705\nPDOMapping=0",
+    "[2000]\nParameterName=Reply COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+    "DefaultValue=$NODEID+0x700\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Reply COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+    "DefaultValue=0x705\nPDOMapping=0",
 )
 def nodeid_elsewhere(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -303,7 +308,8 @@ none: SDO writes to it fail until the application provides memory through OD_ext
 CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS cannot say it.
 Fix: set `string_length_min` for the entry in `<stem>.canopennode.toml`.""",
     "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nDefaultValue=",
-    fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=drive\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=drive\n"
+    "PDOMapping=0",
 )
 def string_without_memory(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):

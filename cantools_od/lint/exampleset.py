@@ -46,7 +46,7 @@ class ExampleFile:
 
     @property
     def kind(self) -> str | None:
-        """"eds" or "xdd" for a framed file, None for one used as it stands."""
+        """ "eds" or "xdd" for a framed file, None for one used as it stands."""
         return None if self.whole else _FRAMED.get(PurePath(self.name).suffix.lower())
 
     def content(self, profile: str | None = None) -> tuple[bytes, dict[int, int]]:

@@ -11,8 +11,8 @@ from ..model.cia301.connections import producers
 from ..model.cia301.objects import COB_ID_SYNC
 from ..model.cia301.pdo import RX, TX, MapEntry, Pdo, pdos
 from ..model.cia301.slots import slot
-from .pdoread import with_severity
 from . import examples as ex
+from .pdoread import with_severity
 from .rules import Context, Finding, LintOptions, rule
 
 
@@ -28,7 +28,10 @@ SYNC (1005h bit 30). Errors: shared node-IDs, shared producers, layouts that dif
 producers. Warnings: an RPDO no node sends, objects of one length but different data types, a
 node without a node-ID (its `$NODEID` COB-IDs are then skipped).""",
     "; file: a.dcf\n" + ex.NODE_5 + "; file: b.dcf\n" + ex.NODE_5 + "; $ cantools-od lint --network a.dcf b.dcf",
-    fixed="; file: a.dcf\n" + ex.NODE_5 + "; file: b.dcf\n" + ex.NODE_5.replace("NodeID=5", "NodeID=6")
+    fixed="; file: a.dcf\n"
+    + ex.NODE_5
+    + "; file: b.dcf\n"
+    + ex.NODE_5.replace("NodeID=5", "NodeID=6")
     + "; $ cantools-od lint --network a.dcf b.dcf",
     fix_safety="No automatic fix: which node changes its node-ID or its COB-IDs is the integrator's decision.",
 )

@@ -428,8 +428,7 @@ def undefined_types(ctx: Context) -> Iterator[Finding]:
 Indices 0001h-0FFFh hold data types: DEFTYPE and DEFSTRUCT objects belong there and nowhere
 else, and nothing else belongs there (CiA 301, object dictionary index areas). Index 0000h is not used.""",
     "; also: DIA005 (every DEFTYPE)\n[2000]\nParameterName=My type\nObjectType=0x5\nDataType=0x0007\nAccessType=ro",
-    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
-    "PDOMapping=0",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: move the definition below 1000h, or use the basic type itself as here.",
 )
 def type_area(ctx: Context) -> Iterator[Finding]:

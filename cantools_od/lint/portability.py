@@ -103,6 +103,7 @@ its REAL values only for lely. Reported once per file with the lely dialect, at 
 value.""",
     "[DeviceInfo]\nVendorName=Lely Industries N.V.\n[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\n"
     "DefaultValue=0x3FC00000",
+    fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1.5\nPDOMapping=0",
 )
 def real_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -151,8 +152,7 @@ supported") and python-canopen skips them, failing with a KeyError on their sub-
 typed by them become unreadable there.""",
     "[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\nAccessType=ro\n\n"
     "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
-    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
-    "PDOMapping=0",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: type the entries by the basic types and delete the definition.",
 )
 def type_definitions(ctx: Context) -> Iterator[Finding]:
@@ -237,8 +237,7 @@ not support it. Undefined custom types are reported by EDS080.""",
     "; also: DIA005 (the definition the type needs)\n"
     "[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\nAccessType=ro\n\n"
     "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0040\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
-    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
-    "PDOMapping=0",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: type the entry by the basic type the definition stands for.",
 )
 def custom_types(ctx: Context) -> Iterator[Finding]:
@@ -338,6 +337,8 @@ The module concept ([SupportedModules], [M<x>...], [ConnectedModules]) is CiA 30
 CANopenEditor reads it, partially: lely dcfchk fails on the sections and python-canopen ignores
 them, so the objects of the modules are missing there. Reported once per file.""",
     "[SupportedModules]\nNrOfEntries=1\n[M1ModuleInfo]\nProductName=Input module",
+    fixed="; the module's objects described as the device's own\n[2000]\nParameterName=Input module inputs\n"
+    "ObjectType=0x7\nDataType=0x0005\nAccessType=ro\nDefaultValue=0\nPDOMapping=1",
 )
 def module_sections(ctx: Context) -> Iterator[Finding]:
     sections = ctx.device.module_sections

@@ -86,7 +86,7 @@ def _body(code: Code) -> list[str]:
     out += failing
     if rule.fixed:
         out += ["Fixed:", "", *_block(rule.fixed, _language(code, rule.fixed)), ""]
-    fix = rule.fix_safety or derived or ("No automatic fix." if rule.check is not None else "")
+    fix = rule.fix_safety or derived or "No automatic fix."
     if fix:
         out += [f"Fix: {fix}", ""]
     refs = "; ".join(r for r in (rule.refs, FAMILIES[code.family].refs) if r)

@@ -113,6 +113,7 @@ has a RECORD (or the reverse) lays out the same entries: that is STD002.
 Fix: none; the object must be described again.
 Fixed: `[1018]` with `ObjectType=0x9` and sub-indices 0-4.""",
     "[1018]\nParameterName=Identity\nObjectType=0x7\nDataType=0x0007\nAccessType=ro",
+    fixed=ex.identity(),
 )
 def object_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -166,6 +167,7 @@ Error: the file and the standard give different bytes for the same entry.
 Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.
 Fixed: `[1000]` with `DataType=0x0007`.""",
     "[1000]\nParameterName=Device type\nDataType=0x0004\nAccessType=ro",
+    fixed="[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro",
 )
 def data_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -210,6 +212,9 @@ Fixed: `[1018sub1]` with `AccessType=ro`.""",
     "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
     "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
     "AccessType=rw",
+    fixed="[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
+    "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
+    "AccessType=ro",
 )
 def access_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -247,6 +252,7 @@ Warning: nothing is read wrong; a configuration step can fail.
 Fix: none offered.
 Fixed: `PDOMapping=0`.""",
     "[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=1",
+    fixed="[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=0",
 )
 def mapping(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -273,6 +279,7 @@ Warning: the value is one the standard rules out; which side is wrong depends on
 Fix: none offered.
 Fixed: `DefaultValue=4` for 1018h sub-index 0.""",
     "[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=1",
+    fixed="[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=0",
 )
 def value_range(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):

@@ -322,6 +322,7 @@ Error: a peer reading the file by the standard loses the entry. Case alone is DI
 Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.
 Fixed: `SupportedObjects=3`, `[DeviceComissioning]`.""",
     "[MandatoryObjects]\nSupported Objects=3\n1=0x1000\n2=0x1001\n3=0x1018",
+    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
 )
 def unfound_spelling(ctx: Context) -> Iterator[Finding]:
     for spelling in spellings(ctx):

@@ -54,14 +54,26 @@ _MANDATORY = {
     'defaultValue="0x00000002" PDOmapping="no"/>\n'
     "</CANopenObject>",
 }
+_ROOT = "<ISO15745ProfileContainer"
 _INDEX = re.compile(r'<CANopenObject\b[^>]*\bindex="([0-9A-Fa-f]{1,4})"')
 
 
 def framed_xdd(fragment: list[tuple[str, int]]) -> tuple[str, dict[int, int]]:
-    """The whole XDD, and for each of its lines that the fragment gives, the fragment's number."""
+    """The whole XDD, and for each of its lines that the fragment gives, the fragment's number.
+
+    A fragment that starts with the root's start tag `<ISO15745ProfileContainer ...>` gives the
+    frame's root its own."""
+    origin: dict[int, int] = {}
+    head = _HEAD
+    if fragment and fragment[0][0].startswith(_ROOT):
+        lines = head.splitlines(keepends=True)
+        root = next(n for n, line in enumerate(lines) if line.startswith(_ROOT))
+        lines[root] = fragment[0][0] + "\n"
+        head, origin[root + 1] = "".join(lines), fragment[0][1]
+        fragment = fragment[1:]
     given = {int(index, 16) for line, _ in fragment for index in _INDEX.findall(line)}
     frame = [element for index, element in _MANDATORY.items() if index not in given]
-    head = _HEAD + "".join(line + "\n" for element in frame for line in element.splitlines())
+    head += "".join(line + "\n" for element in frame for line in element.splitlines())
     first = head.count("\n") + 1
-    origin = {first + i: number for i, (_, number) in enumerate(fragment)}
+    origin.update({first + i: number for i, (_, number) in enumerate(fragment)})
     return head + "".join(line + "\n" for line, _ in fragment) + _TAIL, origin

@@ -27,10 +27,9 @@ PRINTED_CODE = re.compile(r"\[([A-Z]{3}\d{3})\]")
 # Codes no file or command line can make the tool print: they stand for a bug of the tool itself.
 NO_EXAMPLE = {
     "LNT001": "a rule that raises; the linter's own tests inject one (tests/test_lint_framework.py)",
-    "IMP011": "no CSV/TSV table reaches it: a row whose index cell is no index is not taken for a table row",
 }
 # Codes whose failing example has no corrected form: a file refused unread, or a bug of the tool.
-NO_FIXED = {"LNT001", "IMP011", "XDD003"}
+NO_FIXED = {"LNT001", "XDD003"}
 
 ALL = sorted(codes())
 WITH_EXAMPLE = [c for c in ALL if c not in NO_EXAMPLE]

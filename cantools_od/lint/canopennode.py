@@ -305,11 +305,11 @@ def nodeid_elsewhere(ctx: Context) -> Iterator[Finding]:
 A VISIBLE_STRING, UNICODE_STRING or OCTET_STRING gets as many bytes as its default, or
 `string_length_min` when larger. A writable string with an empty default and no minimum gets
 none: SDO writes to it fail until the application provides memory through OD_extension_init.
-CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS cannot say it.
-Fix: set `string_length_min` for the entry in `<stem>.canopennode.toml`.""",
+CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS cannot say it.""",
     "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nDefaultValue=",
     fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=drive\n"
     "PDOMapping=0",
+    fix_safety="No automatic fix: set `string_length_min` for the entry in `<stem>.canopennode.toml`.",
 )
 def string_without_memory(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):

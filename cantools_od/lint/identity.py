@@ -102,8 +102,7 @@ device by it; two different numbers cannot both be right. Not checked when eithe
 or 0 (not configured). A DefaultValue is the EDS's default, not this device's number: it is not
 compared.
 
-Error: the LSS master looks for a device that does not exist.
-Fix: none offered (which number is right is known only on the device).""",
+Error: the LSS master looks for a device that does not exist.""",
     (
         ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
         + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x18")
@@ -112,6 +111,7 @@ Fix: none offered (which number is right is known only on the device).""",
         ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
         + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x17")
     ),
+    fix_safety="No automatic fix (which number is right is known only on the device).",
 )
 def serial_number(ctx: Context) -> Iterator[Finding]:
     section, obj = ctx.device.commissioning, ctx.device.objects.get(IDENTITY)

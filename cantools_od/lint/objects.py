@@ -81,8 +81,7 @@ and sub-objects have no SubNumber. Tools disagree about what such keys mean.
 Error, as a rule: a tool may take the key at its word (sub-objects on a VAR, a mappable DOMAIN).
 Warning where the value says what the object type already says: `SubNumber=0` on a VAR or a
 sub-object, `PDOMapping=0` on a DOMAIN (CANopenNode's editors write both); every tool reads them
-as if they were absent.
-Fix: none offered; delete the key.""",
+as if they were absent.""",
     (
         "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n[2000sub0]\n"
         "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
@@ -95,6 +94,7 @@ Fix: none offered; delete the key.""",
         "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: delete the key.",
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):

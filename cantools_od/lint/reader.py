@@ -49,6 +49,7 @@ of a repeated key.""",
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
+    fix_safety="No automatic fix: delete the copy that is not meant (cantools-od keeps the last value).",
 )
 declare(
     "EDS030",
@@ -62,11 +63,12 @@ kept as it is.
 
 Error: tools read another value or none. Warning for `DefaultValue=0` on a DOMAIN: CANopenNode's
 editors write it for an empty domain and CANopenNode reads it so; lely rejects it, python-canopen
-reads the byte 00h. Fix: none offered; write the value in its type's form (DOMAIN: hex byte pairs).""",
+reads the byte 00h.""",
     ("[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=twelve\nPDOMapping=0"),
     fixed=(
         "[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=12\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: write the value in its type's form (DOMAIN: hex byte pairs).",
 )
 declare(
     "EDS032",
@@ -84,6 +86,8 @@ rejects it), an inline comment after a value (CiA 306 has none), blank-separated
         "; 0x3ED: prevent homing\n[2000]\nParameterName=Homing\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0x3ED\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: write the value as CiA 306 does (decimal, or hex with 0x), a comment on its own "
+    "line.",
 )
 declare(
     "EDS033",
@@ -124,6 +128,7 @@ Inside a section every line is `key=value`, a `;` comment or blank. This line is
 (or stands before the first section) and is ignored.""",
     ("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue 0\nPDOMapping=0"),
     fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
+    fix_safety="No automatic fix: the line is ignored; write it as key=value, or as a `;` comment.",
 )
 declare(
     "EDS102",
@@ -133,6 +138,7 @@ declare(
 A line starting with `[` must end its section name with `]`.""",
     "[2000\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: close the section name with `]`.",
 )
 declare(
     "EDS103",
@@ -148,6 +154,7 @@ The section is kept as text, but no tool can use it.""",
         "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=Child\nObjectType=0x7\nDataType=0x0005\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: add the object's section, or delete the sub-object.",
 )
 declare(
     "EDS104",
@@ -161,6 +168,8 @@ decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) co
         "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=2\n\n"
         "[2000Name]\nNrOfEntries=2\n1=First\n2=Second"
     ),
+    fix_safety="Safe for a wrong NrOfEntries or ObjectLinks count: `--fix` writes the number of entries; no "
+    "automatic fix otherwise.",
 )
 
 

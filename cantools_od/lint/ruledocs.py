@@ -16,10 +16,12 @@ Every code `cantools-od` can print, generated from its registry (`cantools_od/li
 `python -m cantools_od.lint.ruledocs > docs/rules.md`; a test keeps this file current.
 `cantools-od rules CODE` (or its name) shows the same text. Select codes with `--select`/`--ignore`
 by code, prefix or family name. Each example is run (the tests do the same): an EDS fragment through
-`lint` inside a minimal valid EDS, an XDD fragment inside a minimal valid XDD, a `; file:` line starts
-another file, `; whole file:` one used as it stands, `; no [Section]` leaves a section out, and `; $`
-gives the command line that reports the code. The failing example reports its code (and the ones named
-by `; also:`) and nothing else, at the line shown; the fixed one reports nothing.
+`lint` inside a minimal valid EDS (the canopennode codes with `--profile canopennode`, the frame then
+holding the objects the stack requires), an XDD fragment inside a minimal valid XDD. In an example,
+`; file: NAME` starts another file, `; whole file: NAME` one used as it stands, `; no [Section]` leaves
+a section out of the frame, `; encoding:` names the file's encoding, and `; $` gives the command line
+that reports the code. The failing example reports its code (and the ones `; also:` names, which come
+with it by design) and nothing else, at the line shown; the fixed one reports nothing else.
 """
 
 
@@ -86,7 +88,9 @@ def _body(code: Code) -> list[str]:
     out += failing
     if rule.fixed:
         out += ["Fixed:", "", *_block(rule.fixed, _language(code, rule.fixed)), ""]
-    fix = rule.fix_safety or derived or "No automatic fix."
+    # A check whose example's findings carry no fix has none; a code reported while reading, importing or
+    # generating says what can be done in its declaration.
+    fix = rule.fix_safety or derived or ("No automatic fix." if rule.check is not None else "")
     if fix:
         out += [f"Fix: {fix}", ""]
     refs = "; ".join(r for r in (rule.refs, FAMILIES[code.family].refs) if r)

@@ -109,11 +109,10 @@ another layout of sub-indices than the one a master addresses: it reads sub-inde
 device has none, or misses the entries.
 
 Error: the object cannot be read the way the standard says. An ARRAY written where the standard
-has a RECORD (or the reverse) lays out the same entries: that is STD002.
-Fix: none; the object must be described again.
-Fixed: `[1018]` with `ObjectType=0x9` and sub-indices 0-4.""",
+has a RECORD (or the reverse) lays out the same entries: that is STD002.""",
     "[1018]\nParameterName=Identity\nObjectType=0x7\nDataType=0x0007\nAccessType=ro",
     fixed=ex.identity(),
+    fix_safety="No automatic fix: the object must be described again.",
 )
 def object_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -137,11 +136,10 @@ types can still be the same, so a master reading the entries gets the right byte
 build their API from the object type (python-canopen's ODArray/ODRecord, CANopenNode's OD.h)
 offer another interface than for the standard object.
 
-Warning: nothing is read wrong; the description differs from the standard's.
-Fix: none offered (changing ObjectType changes generated code).
-Fixed: `ObjectType=0x9` for 1018h.""",
+Warning: nothing is read wrong; the description differs from the standard's.""",
     ex.identity().replace("ObjectType=0x9", "ObjectType=0x8", 1),
     fixed=ex.identity(),
+    fix_safety="No automatic fix (changing ObjectType changes generated code).",
 )
 def array_or_record(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -164,8 +162,7 @@ UNSIGNED16 makes tools that trust the file (python-canopen, lely, generated code
 encode other bytes than the device uses, and an SDO write of the declared size is refused.
 
 Error: the file and the standard give different bytes for the same entry.
-Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.
-Fixed: `[1000]` with `DataType=0x0007`.""",
+Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.""",
     "[1000]\nParameterName=Device type\nDataType=0x0004\nAccessType=ro",
     fixed="[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro",
 )
@@ -206,15 +203,14 @@ const), 1024h is write-only, the heartbeat and COB-ID objects are rw or, where t
 them, ro/const. A master that follows the file writes where the device refuses, or does not write
 what the standard says it may (a consumer heartbeat time, an error history clear through 1003h sub 0).
 
-Warning: communication works, but configuration steps fail or are skipped.
-Fix: none offered (the device's behaviour decides which side is wrong).
-Fixed: `[1018sub1]` with `AccessType=ro`.""",
+Warning: communication works, but configuration steps fail or are skipped.""",
     "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
     "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
     "AccessType=rw",
     fixed="[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
     "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
     "AccessType=ro",
+    fix_safety="No automatic fix (the device's behaviour decides which side is wrong).",
 )
 def access_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -248,11 +244,10 @@ OS prompt 1026h may; 1000h, 1018h, the heartbeat, COB-ID and SDO objects may not
 `PDOMapping=1` against the standard invites a master to map it, and a standard device refuses that
 mapping (SDO abort 0604 0041h).
 
-Warning: nothing is read wrong; a configuration step can fail.
-Fix: none offered.
-Fixed: `PDOMapping=0`.""",
+Warning: nothing is read wrong; a configuration step can fail.""",
     "[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=1",
     fixed="[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=0",
+    fix_safety="No automatic fix.",
 )
 def mapping(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -275,11 +270,10 @@ Some standard entries allow only some values: 1018h sub-index 0 is 1-4, 1010h/10
 sub-index 0 at least 1, 1019h (SYNC counter overflow) 0 or 2-240, a mapping count 0-64. A device
 description with another default announces a device that a standard master cannot handle.
 
-Warning: the value is one the standard rules out; which side is wrong depends on the device.
-Fix: none offered.
-Fixed: `DefaultValue=4` for 1018h sub-index 0.""",
+Warning: the value is one the standard rules out; which side is wrong depends on the device.""",
     "[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=1",
     fixed="[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=0",
+    fix_safety="No automatic fix.",
 )
 def value_range(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):

@@ -17,6 +17,12 @@ _IMPORT = "docs/import-table.md describes the importer, its layouts and its over
 _HEADER = "Index,Sub-index,Name,Data type,Access,Default value"
 _ROWS = "0x1000,,Device type,UNSIGNED32,ro,0\n0x1001,,Error register,UNSIGNED8,ro,0"
 _IMPORT_TABLE = "; $ cantools-od import-table table.csv -o device.eds"
+# Key/value blocks of a manual's text (TAB-separated), as a PDF-to-text tool extracts them.
+_MANUAL = (
+    "; whole file: manual.txt\nIndex\t1000h\nName\tDevice type\nObject code\tVAR\nData type\tUNSIGNED32\n"
+    "Access\tro\n\nIndex\t{index}\nName\tSpeed\nObject code\tVAR\nData type\tUNSIGNED16\nAccess\trw\n"
+    "; $ cantools-od import-table manual.txt -o device.eds"
+)
 
 
 def _table(rows: str, header: str = _HEADER, command: str = _IMPORT_TABLE) -> str:
@@ -96,7 +102,11 @@ _importer(
     W,
     "Index not understood",
     """
-The row's index cell is not an object index; the row is skipped.""",
+The index of an object block in a manual's text is not an object index, so the block's entries
+cannot be placed and are skipped. (In a column table such a row is taken for a note.)""",
+    _MANUAL.format(index="20xxh"),
+    _MANUAL.format(index="2000h"),
+    "write the index as a hex number (`2000h`, `0x2000`).",
 )
 _importer(
     "IMP012",
@@ -226,4 +236,5 @@ declare(
 A rule raised an exception on this file. The other rules still ran; the failing rule's findings
 are missing. Please report it with the file.""",
     family="lint",
+    fix_safety="No automatic fix: report the failure with the file; meanwhile `--ignore` the rule's code.",
 )

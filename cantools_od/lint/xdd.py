@@ -19,8 +19,7 @@ declare(
     "Not well-formed XML",
     """
 The file breaks the XML syntax (an unclosed tag, a stray `&`, bytes that are not in its encoding), so no
-tool can read it as a CiA 311 device description. Nothing after the error is read. Not fixable
-automatically.""",
+tool can read it as a CiA 311 device description. Nothing after the error is read.""",
     _SETTING + ">\n</CANopenObjectList>",
     fixed=_SETTING + "/>",
     fix_safety="No automatic fix: only the author knows what the broken markup meant.",
@@ -33,7 +32,7 @@ declare(
     """
 CiA 311 files need no DTD entities. An entity declaration can expand to gigabytes ("billion laughs"),
 and an external entity can make a reader disclose local files (XXE); both are refused, and the file is
-not read. Remove the DOCTYPE. Not fixable automatically.""",
+not read. Remove the DOCTYPE.""",
     '; whole file: device.xdd\n<?xml version="1.0"?>\n<!DOCTYPE x [<!ENTITY e SYSTEM "file:///etc/passwd">]>\n'
     '<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1">&e;</ISO15745ProfileContainer>',
     fixed="; file: device.xdd\n" + _SETTING + "/>",
@@ -47,7 +46,7 @@ declare(
     """
 Device descriptions are at most a few megabytes. A file larger than 32 MiB, with more than 500 000
 elements or nested deeper than 64 levels is refused unread, so hostile input costs bounded time and
-memory. Not fixable automatically.""",
+memory.""",
     "; $ python3 -c \"print('<a>' * 65 + '</a>' * 65)\" > deep.xdd\n; $ cantools-od lint deep.xdd",
     fix_safety="No automatic fix: the file is not read.",
     family=_FAMILY,
@@ -75,7 +74,7 @@ schema-validating tools (CANopenEditor's serializer among them) find no CiA 311 
 matches elements by local name either way.""",
     '<ISO15745ProfileContainer xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
     fixed='<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
-    fix_safety="No automatic fix: `convert` writes the namespace when it writes an XDD.",
+    fix_safety='No automatic fix: add `xmlns="http://www.canopen.org/xml/1.1"` to the root element.',
     family=_FAMILY,
 )
 declare(

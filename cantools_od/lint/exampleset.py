@@ -25,9 +25,12 @@ import re
 from dataclasses import dataclass, field
 from pathlib import PurePath
 
+from ..api import loads
+from ..model import Location, Severity
 from ..sniff import NotADeviceDescription
 from .examples import framed_lines
 from .rules import Finding, LintOptions
+from .runner import lint, lint_network
 from .xddframe import framed_xdd
 
 _DIRECTIVE = re.compile(r"^;\s*(file|whole file|no|encoding|also|\$)(?::\s*|\s+)(.*)$")
@@ -46,12 +49,12 @@ class ExampleFile:
 
     @property
     def kind(self) -> str | None:
-        """ "eds" or "xdd" for a framed file, None for one used as it stands."""
+        """How the file is framed: "eds" or "xdd", or None for a file used as it stands."""
         return None if self.whole else _FRAMED.get(PurePath(self.name).suffix.lower())
 
     def content(self, profile: str | None = None) -> tuple[bytes, dict[int, int]]:
         """The file's bytes, and for each of its lines that the example gives, the example's line."""
-        fragment = [(text, number) for text, number in self.lines]
+        fragment = self.lines
         if self.kind == "eds":
             text, origin = framed_lines(fragment, self.omit, profile)
         elif self.kind == "xdd":
@@ -75,34 +78,29 @@ def parse(text: str, default_name: str = "example.eds") -> Example:
     commands: list[str] = []
     also: list[str] = []
     current: ExampleFile | None = None
-    pending_omit: set[str] = set()
-    pending_encoding = "utf-8"
+    pending = ExampleFile(default_name)  # what `; no` and `; encoding` say before the first file starts
     for number, line in enumerate(text.splitlines(), 1):
         directive = _DIRECTIVE.match(line.strip())
         if directive is None:
             if current is None:
-                current = ExampleFile(default_name, omit=pending_omit, encoding=pending_encoding)
+                current = pending
                 files.append(current)
             current.lines.append((line, number))
             continue
         keyword, value = directive.groups()
         if keyword in ("file", "whole file"):
-            current = ExampleFile(value.strip(), whole=keyword == "whole file")
+            current = ExampleFile(value.strip(), [], keyword == "whole file", pending.encoding, set(pending.omit))
             files.append(current)
         elif keyword == "no":
-            names = {n.lower() for n in _SECTION_NAME.findall(value)}
-            (current.omit if current else pending_omit).update(names)
+            (current or pending).omit.update(n.lower() for n in _SECTION_NAME.findall(value))
         elif keyword == "encoding":
-            if current is None:
-                pending_encoding = value.strip()
-            else:
-                current.encoding = value.strip()
+            (current or pending).encoding = value.strip()
         elif keyword == "also":
             also += _CODE.findall(value)
         else:
             commands.append(value.strip())
     if not files and not commands:
-        files.append(ExampleFile(default_name, omit=pending_omit, encoding=pending_encoding))
+        files.append(pending)
     return Example(files, commands, tuple(also))
 
 
@@ -127,10 +125,6 @@ def default_name(family: str) -> str:
 
 def run_example(text: str, family: str = "", profile: str | None = None) -> Outcome:
     """Read and lint the example's files in-process, as `lint` (several files: `lint --network`)."""
-    from ..api import loads
-    from ..model import Location, Severity
-    from .runner import lint, lint_network
-
     example = parse(text, default_name(family))
     options = LintOptions(profile=profile)
     found: list[tuple[Finding, int | None]] = []

@@ -4,7 +4,8 @@ Like ruff's `codes.rs`, this table is the one list of codes: a family's module d
 code means (`rule()` for a check, `declare()` for a code reported while reading, importing or
 generating: severity, summary, documentation), and this table says which codes exist, which family
 owns them and what they are called. A test fails when the two disagree. Adding a code is one
-line here plus its declaration in the family's module.
+line here plus its declaration in the family's module, with a failing and a fixed example (see
+`exampleset` for what an example can say), which tests/test_rule_docs.py runs.
 
 `--select`/`--ignore` take codes, code prefixes (`PDO`, `EDS03`) and family names (`cobid`).
 """

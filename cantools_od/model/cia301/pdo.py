@@ -17,14 +17,15 @@ from ..datatypes import DataType, standard_type
 from ..device import Device
 from ..objects import Object, ObjectKind
 from .cobid import Cob, cob_of
+from .objects import COMM_BASE as COMM_BASE  # the record ranges live in .objects (no imports): re-exported
 from .objects import DATA_TYPE_AREA
+from .objects import MAP_BASE as MAP_BASE
+from .objects import PDO_AREA as PDO_AREA
+from .objects import PDO_SPAN as PDO_SPAN
+from .objects import RX as RX
+from .objects import TX as TX
 from .slots import Slot, as_int
 
-RX, TX = "rx", "tx"
-COMM_BASE = {RX: 0x1400, TX: 0x1800}
-MAP_BASE = {RX: 0x1600, TX: 0x1A00}
-PDO_SPAN = 0x200  # 512 PDOs per direction
-PDO_AREA = range(COMM_BASE[RX], MAP_BASE[TX] + PDO_SPAN)  # 1400h-1BFFh
 MAX_ENTRIES = 0x40
 SAM_MPDO, DAM_MPDO = 0xFE, 0xFF
 CLASSIC_CAN_BITS, CAN_FD_BITS = 64, 512

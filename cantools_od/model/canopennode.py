@@ -161,6 +161,16 @@ COUNT_LIMITS: dict[str, tuple[int, int]] = {
     "SRDO": (0, len(SRDO_COMM)),
 }
 
+# Counts CANopen.c needs, each with the object that usually carries it (CO_CANopenInit uses them).
+REQUIRED_COUNTS: tuple[tuple[str, int], ...] = (
+    ("NMT", DEVICE_TYPE), ("EM", ERROR_REGISTER), ("EM_PROD", COB_ID_EMCY), ("HB_CONS", CONSUMER_HEARTBEAT),
+    ("HB_PROD", PRODUCER_HEARTBEAT),
+)  # fmt: skip
+# Objects the stack uses beside a counted one: label → the indices it then reads too.
+COMPANIONS: tuple[tuple[str, tuple[int, ...]], ...] = (
+    ("EM", (ERROR_HISTORY,)), ("SYNC", (COMM_CYCLE_PERIOD,)), ("SRDO", (SRDO_CONFIGURATION_VALID, SRDO_CRC)),
+)  # fmt: skip
+
 # Objects the stack's init walks by position from the first one: label → (first index, partner offset).
 # RPDO i uses 1400h+i and 1600h+i, TPDO i 1800h+i and 1A00h+i, SRDO i 1301h+i and 1381h+i.
 CONSECUTIVE: dict[str, tuple[int, int | None]] = {

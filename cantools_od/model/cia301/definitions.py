@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from enum import Enum
 
-from ..datatypes import STANDARD_TYPES, standard_type
+from ..datatypes import INDEX_BY_NAME, standard_type
 from ..objects import AccessType, ObjectKind
 from .objects import COMM_BASE, FIRST_SDO_SERVER, IDENTITY, MAP_BASE, RX
 
@@ -28,7 +28,7 @@ RW_OR_RO = RW | RO
 """The standard lets the device choose (a fixed COB-ID, a fixed heartbeat time)."""
 WRITABLE = RW | WO
 
-_TYPE = {dtype.name: dtype.index for dtype in STANDARD_TYPES.values()}
+_TYPE = INDEX_BY_NAME
 BOOLEAN, INTEGER8, INTEGER16, INTEGER32 = _TYPE["BOOLEAN"], _TYPE["INTEGER8"], _TYPE["INTEGER16"], _TYPE["INTEGER32"]
 UNSIGNED8, UNSIGNED16, UNSIGNED32 = _TYPE["UNSIGNED8"], _TYPE["UNSIGNED16"], _TYPE["UNSIGNED32"]
 UNSIGNED64, VISIBLE_STRING, OCTET_STRING, DOMAIN = (

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
-from ..datatypes import UNSIGNED32, DataType, standard_type
+from ..datatypes import BOOLEAN, UNSIGNED32, DataType, standard_type
 from ..device import Device
 from ..objects import Object, ObjectKind
 from .cobid import Cob, cob_of
@@ -38,6 +38,8 @@ COMM_SUBS: dict[int, tuple[str, int]] = {
     sub: (entry.name, entry.data_type) for sub, entry in enumerate(PDO_COMM_SUBS) if sub and entry.data_type is not None
 }
 MAPPING_ENTRY_TYPE = UNSIGNED32.index
+# The data types a device may map as dummy entries ([DummyUsage] Dummy0001-Dummy0007 of CiA 306).
+DUMMY_TYPES = range(BOOLEAN.index, UNSIGNED32.index + 1)
 
 
 def frame_bits(can_fd: bool) -> int:

@@ -16,7 +16,20 @@ from enum import Enum
 
 from ..datatypes import INDEX_BY_NAME, standard_type
 from ..objects import AccessType, ObjectKind
-from .objects import COMM_BASE, FIRST_SDO_SERVER, IDENTITY, MAP_BASE, RX
+from .objects import (
+    COMM_BASE,
+    DEVICE_TYPE,
+    ERROR_REGISTER,
+    FIRST_SDO_SERVER,
+    IDENTITY,
+    MAP_BASE,
+    MAX_ENTRIES,
+    PDO_SPAN,
+    RX,
+    SDO_CLIENTS,
+    SDO_SERVERS,
+    TX,
+)
 
 _A = AccessType
 RO = frozenset({_A.RO, _A.CONST})
@@ -145,7 +158,13 @@ PDO_COMM_SUBS = (
     Entry("Event timer", UNSIGNED16, RW_OR_RO),
     Entry("SYNC start value", UNSIGNED8, RW_OR_RO),
 )
-_PDO_MAP_COUNT = Entry("Number of mapped objects", UNSIGNED8, RW_OR_RO, values=((0, 0x40),))
+
+
+def _last(base: int) -> int:
+    return base + PDO_SPAN - 1
+
+
+_PDO_MAP_COUNT = Entry("Number of mapped objects", UNSIGNED8, RW_OR_RO, values=((0, MAX_ENTRIES),))
 _PDO_MAP_ENTRY = Entry("Mapped object", UNSIGNED32, RW_OR_RO, eds_name="Application object")
 _SDO = (  # mappable, so that an SDO manager can set up connections (CiA 302-5)
     Entry("COB-ID client to server", UNSIGNED32, RW_OR_RO, Mapping.OPTIONAL),
@@ -160,8 +179,8 @@ _OS = (
 _O = Mapping.OPTIONAL
 
 DEFINITIONS: tuple[Definition, ...] = (
-    var(0x1000, "Device type", UNSIGNED32, RO, usual=_A.RO),
-    var(0x1001, "Error register", UNSIGNED8, RO, _O, usual=_A.RO),
+    var(DEVICE_TYPE, "Device type", UNSIGNED32, RO, usual=_A.RO),
+    var(ERROR_REGISTER, "Error register", UNSIGNED8, RO, _O, usual=_A.RO),
     var(0x1002, "Manufacturer status register", UNSIGNED32, RO, _O, usual=_A.RO),
     array(0x1003, "Pre-defined error field", Entry("Standard error field", UNSIGNED32, RO, usual=_A.RO),
           count_entry("Number of errors", RW, 0, 0xFE, usual=_A.RW)),
@@ -185,7 +204,7 @@ DEFINITIONS: tuple[Definition, ...] = (
     array(0x1016, "Consumer heartbeat time", Entry("Consumer heartbeat time", UNSIGNED32, RW_OR_RO, usual=_A.RW),
           count_entry("Highest sub-index supported", RO, 1, 0x7F)),
     var(0x1017, "Producer heartbeat time", UNSIGNED16, RW_OR_RO, usual=_A.RW),
-    record(0x1018, "Identity object", count_entry("Highest sub-index supported", RO, 1, 4),
+    record(IDENTITY, "Identity object", count_entry("Highest sub-index supported", RO, 1, 4),
            Entry("Vendor-ID", UNSIGNED32, RO, usual=_A.RO), Entry("Product code", UNSIGNED32, RO, usual=_A.RO),
            Entry("Revision number", UNSIGNED32, RO, usual=_A.RO), Entry("Serial number", UNSIGNED32, RO, usual=_A.RO)),
     var(0x1019, "Synchronous counter overflow value", UNSIGNED8, RW_OR_RO, values=((0, 0), (2, 240)), usual=_A.RW),
@@ -207,14 +226,16 @@ DEFINITIONS: tuple[Definition, ...] = (
     array(0x1029, "Error behavior object", Entry("Error class", UNSIGNED8, RW_OR_RO, usual=_A.RW),
           eds_name="Error behavior"),
     var(0x102A, "NMT inhibit time", UNSIGNED16, RW_OR_RO),
-    record(0x1200, "SDO server parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
-           Entry("Node-ID of the SDO client", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=0x127F),
-    record(0x1280, "SDO client parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
-           Entry("Node-ID of the SDO server", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=0x12FF),
-    record(0x1400, "RPDO communication parameter", *PDO_COMM_SUBS, last=0x15FF),
-    record(0x1600, "RPDO mapping parameter", _PDO_MAP_COUNT, last=0x17FF, rest=_PDO_MAP_ENTRY, rest_until=0x40),
-    record(0x1800, "TPDO communication parameter", *PDO_COMM_SUBS, last=0x19FF),
-    record(0x1A00, "TPDO mapping parameter", _PDO_MAP_COUNT, last=0x1BFF, rest=_PDO_MAP_ENTRY, rest_until=0x40),
+    record(SDO_SERVERS[0], "SDO server parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
+           Entry("Node-ID of the SDO client", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=SDO_SERVERS[-1]),
+    record(SDO_CLIENTS[0], "SDO client parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
+           Entry("Node-ID of the SDO server", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=SDO_CLIENTS[-1]),
+    record(COMM_BASE[RX], "RPDO communication parameter", *PDO_COMM_SUBS, last=_last(COMM_BASE[RX])),
+    record(MAP_BASE[RX], "RPDO mapping parameter", _PDO_MAP_COUNT, last=_last(MAP_BASE[RX]), rest=_PDO_MAP_ENTRY,
+           rest_until=MAX_ENTRIES),
+    record(COMM_BASE[TX], "TPDO communication parameter", *PDO_COMM_SUBS, last=_last(COMM_BASE[TX])),
+    record(MAP_BASE[TX], "TPDO mapping parameter", _PDO_MAP_COUNT, last=_last(MAP_BASE[TX]), rest=_PDO_MAP_ENTRY,
+           rest_until=MAX_ENTRIES),
     array(0x1F22, "Concise DCF", Entry("Concise DCF", DOMAIN, RW_OR_RO), clause=CIA302_3),
     array(0x1F25, "Configure slave", Entry("Configure slave", None, WRITABLE), clause=CIA302_3),
     array(0x1F50, "Program data", Entry("Program", DOMAIN, WRITABLE), clause=CIA302_3),

@@ -16,22 +16,21 @@ from dataclasses import dataclass
 from ..datatypes import BOOLEAN, UNSIGNED32, DataType, standard_type
 from ..device import Device
 from ..objects import Object, ObjectKind
+from .cobid import PREDEFINED as PREDEFINED  # the COB-ID bases of PDOs 1-4 live with the others
 from .cobid import Cob, cob_of
 from .definitions import PDO_COMM_SUBS
 from .objects import COMM_BASE as COMM_BASE  # the record ranges live in .objects (no imports): re-exported
 from .objects import DATA_TYPE_AREA
 from .objects import MAP_BASE as MAP_BASE
+from .objects import MAX_ENTRIES as MAX_ENTRIES
 from .objects import PDO_AREA as PDO_AREA
 from .objects import PDO_SPAN as PDO_SPAN
 from .objects import RX as RX
 from .objects import TX as TX
 from .slots import Slot, as_int
 
-MAX_ENTRIES = 0x40
 SAM_MPDO, DAM_MPDO = 0xFE, 0xFF
 CLASSIC_CAN_BITS, CAN_FD_BITS = 64, 512
-# The pre-defined connection set's COB-ID bases of PDOs 1-4 (COB-ID = base + node-ID).
-PREDEFINED = {RX: (0x200, 0x300, 0x400, 0x500), TX: (0x180, 0x280, 0x380, 0x480)}
 
 # The PDO_COMMUNICATION_PARAMETER record (0020h): sub-index -> (name, data type).
 COMM_SUBS: dict[int, tuple[str, int]] = {

@@ -14,15 +14,24 @@ import re
 from collections.abc import Iterator
 
 from ..model import Device, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
-from ..model.canopennode import CONSECUTIVE, COUNT_LIMITS, NODEID_AREAS, count_label_for, standard_storage_group
+from ..model.canopennode import (
+    COMPANIONS,
+    CONSECUTIVE,
+    COUNT_LIMITS,
+    NODEID_AREAS,
+    REQUIRED_COUNTS,
+    count_label_for,
+    standard_storage_group,
+)
+from ..model.datatypes import DOMAIN, INDEX_BY_NAME, REAL32, UNSIGNED8
 from . import examples as ex
 from .rules import Context, Finding, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 PROFILE = "canopennode"
 # Rule examples: an ARRAY of two INTEGER16 gains, its sub-index 0 and one gain.
-_COUNT = ("Highest sub-index supported", 0x0005, "ro", 2)
-_GAIN = ("Gain", 0x0003, "rw", 0)
+_COUNT = ("Highest sub-index supported", UNSIGNED8.index, "ro", 2)
+_GAIN = ("Gain", INDEX_BY_NAME["INTEGER16"], "rw", 0)
 _ARRAY = ex.record(0x2000, "Gains", {0: _COUNT, 1: _GAIN, 2: _GAIN}).replace("ObjectType=0x9", "ObjectType=0x8", 1)
 _C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _SUPPORTED = (ObjectKind.VAR, ObjectKind.DOMAIN, ObjectKind.ARRAY, ObjectKind.RECORD)
@@ -80,7 +89,7 @@ generated data disagree with what the stack reads. Fix: DataType=0x0005 on sub-i
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         sub0 = obj.subs.get(0)
-        if obj.has_subs and sub0 is not None and sub0.data_type not in (None, 0x0005):
+        if obj.has_subs and sub0 is not None and sub0.data_type not in (None, UNSIGNED8.index):
             message = f"{obj.index:04X}h sub0 has DataType {sub0.data_type:#06x}, the stack needs UNSIGNED8"
             yield ctx.report("CNO002", message, ctx.at(ctx.section_of(obj, sub0), "DataType"))
 
@@ -164,13 +173,12 @@ def required_counts(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
     if ctx.options.profile != PROFILE:
         return
-    required = (("NMT", 0x1000), ("EM", 0x1001), ("EM_PROD", 0x1014), ("HB_CONS", 0x1016), ("HB_PROD", 0x1017))
-    for label, index in required:
+    for label, index in REQUIRED_COUNTS:
         if label not in counts:
             message = f"no object counts as {label} (usually {index:04X}h): CANopen.c needs OD_CNT_{label}"
             yield ctx.report("CNO005", message, ctx.at(ctx.device.mandatory_objects or ctx.device.file_info))
     present = {obj.index for obj in _objects(ctx)}
-    for label, needed in (("EM", (0x1003,)), ("SYNC", (0x1006,)), ("SRDO", (0x13FE, 0x13FF))):
+    for label, needed in COMPANIONS:
         for index in needed if label in counts else ():
             if index not in present:
                 message = f"{counts[label][0].index:04X}h counts as {label}, so CANopen.c also uses {index:04X}h"
@@ -262,7 +270,7 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
             value = var.parameter_value if var.parameter_value is not None else var.default
             dtype = ctx.device.entry_type(var, obj)
             bad = isinstance(value, RawValue)
-            if dtype is not None and dtype.index == 0x0008 and isinstance(value, (int, float)):
+            if dtype is not None and dtype.index == REAL32.index and isinstance(value, (int, float)):
                 bad = math.isfinite(value) and abs(value) > 3.4028234663852886e38
             if bad:
                 where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
@@ -317,7 +325,7 @@ def string_without_memory(ctx: Context) -> Iterator[Finding]:
             dtype = ctx.device.entry_type(var, obj)
             if dtype is None or dtype.kind not in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS):
                 continue
-            if dtype.index == 0x000F or var.access is None or not var.access.writable:
+            if dtype.index == DOMAIN.index or var.access is None or not var.access.writable:
                 continue
             value = var.parameter_value if var.parameter_value is not None else var.default
             minimum = var.canopennode.string_length_min if var.canopennode else None

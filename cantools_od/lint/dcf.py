@@ -6,6 +6,7 @@ import re
 from collections.abc import Iterator
 
 from ..model import Device, Object, RawSection, Severity, Variable
+from ..model.datatypes import DOMAIN
 from . import examples as ex
 from .common import explicit_vars, file_start, given, invalid, where
 from .rules import Context, Finding, rule
@@ -48,7 +49,7 @@ def file_access(ctx: Context) -> Iterator[Finding]:
 
 def _domain(device: Device, obj: Object, var: Variable) -> bool:
     dtype = device.entry_type(var, obj)
-    return dtype is not None and dtype.index == 0x000F
+    return dtype is not None and dtype.index == DOMAIN.index
 
 
 @rule(

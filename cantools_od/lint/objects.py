@@ -11,7 +11,7 @@ from dataclasses import replace
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
 from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
 from ..model.cia301.pdo import PDO_AREA
-from ..model.datatypes import STANDARD_TYPES
+from ..model.datatypes import STANDARD_TYPES, STATIC_TYPE_AREA, UNSIGNED8
 from .common import explicit_objects, explicit_vars, given, where
 from .rules import Context, Finding, Fix, rule
 
@@ -255,7 +255,7 @@ def sub0_type(ctx: Context) -> Iterator[Finding]:
         sub0 = obj.subs.get(0)
         if sub0 is None:
             yield ctx.report("EDS025", f"[{obj.index:04X}]: no sub-index 0 ({obj.kind.name})", ctx.at(obj))
-        elif sub0.data_type is not None and ctx.device.entry_type(sub0, obj) is not STANDARD_TYPES[0x0005]:
+        elif sub0.data_type is not None and ctx.device.entry_type(sub0, obj) is not UNSIGNED8:
             message = f"[{obj.index:04X}sub0]: DataType=0x{sub0.data_type:04X}; sub-index 0 is UNSIGNED8 (0x0005)"
             yield ctx.report("EDS025", message, ctx.value_at(sub0, "DataType"))
 
@@ -415,7 +415,7 @@ def undefined_types(ctx: Context) -> Iterator[Finding]:
         definition = objects.get(dtype)
         if dtype in DATA_TYPE_AREA and definition is not None and definition.kind in _TYPE_KINDS:
             continue
-        reason = "reserved data type index" if 0 < dtype < 0x0020 else "no DEFTYPE/DEFSTRUCT object defines it"
+        reason = "reserved data type index" if dtype in STATIC_TYPE_AREA else "no DEFTYPE/DEFSTRUCT object defines it"
         message = f"{where(obj, subindex)}: DataType=0x{dtype:04X}: {reason}"
         yield ctx.report("EDS080", message, ctx.value_at(var, "DataType"))
 

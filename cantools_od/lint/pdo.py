@@ -7,12 +7,12 @@ from collections.abc import Iterable, Iterator
 from ..model import AccessType, ObjectKind, Severity
 from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry, Pdo, dummy_type
 from ..model.cia301.slots import Slot
+from ..model.datatypes import BOOLEAN
 from . import examples as ex
 from .pdoread import device_pdos, dummies, length_fix, limits_fit, mapped_objects, named, with_severity
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
-BOOLEAN = 0x0001
 
 
 # --- records ---------------------------------------------------------------------------------
@@ -308,7 +308,7 @@ def check_length(ctx: Context) -> Iterator[Finding]:
             if dtype is None or dtype.bits is None or entry.bits == dtype.bits:
                 continue
             message = f"{pdo.name}: entry 0x{entry.raw:08X} maps {entry.bits} bits, but {what} is {dtype.name}"
-            if dtype.index == BOOLEAN and entry.bits == 8:  # CANopenNode's byte-sized BOOLEAN
+            if dtype.index == BOOLEAN.index and entry.bits == 8:  # CANopenNode's byte-sized BOOLEAN
                 fix = length_fix(entry, 1)
                 unsafe = Fix(fix.message, False, fix.apply) if fix is not None else None
                 message += " (1 bit; CANopenNode devices expect the byte they store it in)"

@@ -21,12 +21,14 @@ from ..model import (
     ValueKind,
     Variable,
 )
+from ..model.cia301.objects import DATA_TYPE_AREA
+from ..model.cia301.pdo import DUMMY_TYPES
+from ..model.datatypes import BASIC_TYPE_RANGE
 from .rules import Context, Finding, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
 
 W, INFO = Severity.WARNING, Severity.INFO
 
-_CANOPEN_DUMMIES = range(0x0001, 0x0008)
 _EXTENSION_KEYS = {keys.normalize(key) for key in EXTENSION_KEYS}
 _STRING_FIELDS = (("ParameterName", "name"), ("Denotation", "denotation"))
 
@@ -57,7 +59,7 @@ def dummy_usage(ctx: Context) -> Iterator[Finding]:
     usage = ctx.device.dummy_usage
     if usage is None:
         return
-    missing = [f"Dummy{index:04X}" for index in _CANOPEN_DUMMIES if index not in usage.enabled]
+    missing = [f"Dummy{index:04X}" for index in DUMMY_TYPES if index not in usage.enabled]
     if missing:
         message = f"[DummyUsage] lacks {', '.join(missing)}; python-canopen fails to load the file"
         yield ctx.report("DIA001", message, ctx.at(usage))
@@ -244,7 +246,8 @@ def custom_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
     for _, label, var in _vars(ctx.device):
         dtype = var.data_type
-        definition = objects.get(dtype) if dtype is not None and 0x001B < dtype < 0x1000 else None
+        custom = dtype in DATA_TYPE_AREA and dtype not in BASIC_TYPE_RANGE
+        definition = objects.get(dtype) if dtype is not None and custom else None
         if definition is not None and definition.kind in (ObjectKind.DEFTYPE, ObjectKind.DEFSTRUCT):
             message = f"{label} DataType=0x{dtype:04X} (a custom type); python-canopen reads it as DOMAIN"
             yield ctx.report("DIA008", message, ctx.value_at(var, "DataType"))

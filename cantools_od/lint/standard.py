@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterator
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable, standard_type
 from ..model.cia301 import cia402, definitions
 from ..model.cia301.definitions import Definition, Entry, Mapping
+from ..model.cia301.objects import COMMUNICATION_AREA, DEVICE_TYPE
 from ..model.cia301.pdo import PDO_AREA
 from ..model.cia301.slots import as_int
 from . import examples as ex
@@ -34,7 +35,7 @@ def _type_name(data_type: int | None) -> str:
 
 def is_drive(device: Device) -> bool:
     """1000h names device profile 402 (the drive profile) in its low 16 bits."""
-    obj = device.objects.get(0x1000)
+    obj = device.objects.get(DEVICE_TYPE)
     value = as_int(device.resolve(obj.value())) if obj is not None else None
     return value is not None and cia402.device_profile(value) == cia402.PROFILE
 
@@ -45,7 +46,7 @@ def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
     for index, obj in device.objects.items():
         if obj.implicit or index in _PDO_RECORDS:
             continue
-        if 0x1000 <= index <= 0x1FFF:
+        if index in COMMUNICATION_AREA:
             found = definitions.definition(index)
         elif drive and 0x6000 <= index <= 0x67FF:
             found = cia402.definition(index)

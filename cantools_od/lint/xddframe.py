@@ -40,12 +40,13 @@ _TAIL = """        </CANopenObjectList>
   </ISO15745Profile>
 </ISO15745ProfileContainer>
 """
-_MANDATORY = {
-    0x1000: '<CANopenObject index="1000" name="Device type" objectType="7" dataType="0007" accessType="ro" '
+# The frame's objects that CiA 301 makes mandatory (model/cia301/objects.MANDATORY), each known by its index.
+_MANDATORY_ELEMENTS = (
+    '<CANopenObject index="1000" name="Device type" objectType="7" dataType="0007" accessType="ro" '
     'defaultValue="0x00000000" PDOmapping="no"/>',
-    0x1001: '<CANopenObject index="1001" name="Error register" objectType="7" dataType="0005" accessType="ro" '
+    '<CANopenObject index="1001" name="Error register" objectType="7" dataType="0005" accessType="ro" '
     'PDOmapping="TPDO"/>',
-    0x1018: '<CANopenObject index="1018" name="Identity object" objectType="9" subNumber="3">\n'
+    '<CANopenObject index="1018" name="Identity object" objectType="9" subNumber="3">\n'
     '  <CANopenSubObject subIndex="00" name="Highest sub-index supported" objectType="7" dataType="0005" '
     'accessType="ro" defaultValue="2" PDOmapping="no"/>\n'
     '  <CANopenSubObject subIndex="01" name="Vendor-ID" objectType="7" dataType="0007" accessType="ro" '
@@ -53,7 +54,7 @@ _MANDATORY = {
     '  <CANopenSubObject subIndex="02" name="Product code" objectType="7" dataType="0007" accessType="ro" '
     'defaultValue="0x00000002" PDOmapping="no"/>\n'
     "</CANopenObject>",
-}
+)
 _ROOT = "<ISO15745ProfileContainer"
 _INDEX = re.compile(r'<CANopenObject\b[^>]*\bindex="([0-9A-Fa-f]{1,4})"')
 
@@ -72,7 +73,7 @@ def framed_xdd(fragment: list[tuple[str, int]]) -> tuple[str, dict[int, int]]:
         head, origin[root + 1] = "".join(lines), fragment[0][1]
         fragment = fragment[1:]
     given = {int(index, 16) for line, _ in fragment for index in _INDEX.findall(line)}
-    frame = [element for index, element in _MANDATORY.items() if index not in given]
+    frame = [element for element in _MANDATORY_ELEMENTS if int(_INDEX.findall(element)[0], 16) not in given]
     head += "".join(line + "\n" for element in frame for line in element.splitlines())
     first = head.count("\n") + 1
     origin.update({first + i: number for i, (_, number) in enumerate(fragment)})

@@ -26,6 +26,8 @@ from .definitions import (
 
 PROFILE = 402
 CLAUSE = "CiA 402-2"
+# The profile's record data types (of 60C2h and of 60C4h).
+INTERPOLATION_TIME_PERIOD_TYPE, INTERPOLATION_DATA_CONFIGURATION_TYPE = 0x0080, 0x0081
 _O = Mapping.OPTIONAL
 
 

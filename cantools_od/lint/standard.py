@@ -48,7 +48,7 @@ def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
             continue
         if index in COMMUNICATION_AREA:
             found = definitions.definition(index)
-        elif drive and 0x6000 <= index <= 0x67FF:
+        elif drive and index in cia402.AREA:
             found = cia402.definition(index)
         else:
             continue

@@ -9,20 +9,21 @@ from __future__ import annotations
 import argparse
 import gc
 import json
-import logging
 import os
 import statistics
 import sys
 import tempfile
 import time
 import tracemalloc
-import warnings
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any, Literal
 
 import canopen
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+from peermatrix import quiet  # python-canopen logs and warns about every odd entry: none of it is measured
 
 import cantools_od
 from cantools_od import dumps, load, loads
@@ -31,19 +32,6 @@ DEFAULT_CORPUS = Path(__file__).resolve().parents[2] / "shared" / "eds-corpus" /
 SYNTHETIC_OBJECTS = 5000
 
 Result = dict[str, Any]
-
-
-@contextmanager
-def quiet() -> Iterator[None]:
-    """python-canopen logs (and sometimes warns) about every odd entry; none of that belongs in a benchmark."""
-    previous = logging.root.manager.disable
-    logging.disable(logging.CRITICAL)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            yield
-    finally:
-        logging.disable(previous)
 
 
 def corpus_files(corpus: Path) -> list[Path]:

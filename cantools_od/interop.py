@@ -22,14 +22,15 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Literal
 
 from .model import Device, NodeIdExpr, Object, ObjectKind, RawValue, TimeValue, Value, ValueKind, Variable
+from .model.datatypes import BASIC_TYPE_RANGE, DOMAIN
 
 if TYPE_CHECKING:
     import canopen
 
 __all__ = ["OdObject", "OdValue", "OdVariable", "od_objects", "time_bytes", "to_canopen"]
 
-DOMAIN_TYPE = 0x000F
-LAST_BASIC_TYPE = 0x001B
+DOMAIN_TYPE = DOMAIN.index
+LAST_BASIC_TYPE = BASIC_TYPE_RANGE[-1]
 
 OdValue = int | float | str | bytes | NodeIdExpr | None
 """A value as python-canopen holds it; `NodeIdExpr` until a node-ID resolves it."""

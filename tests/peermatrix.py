@@ -49,20 +49,34 @@ def _same(a: Any, b: Any) -> bool:
     return type(a) is type(b) and a == b
 
 
-def canopen_reading(path: Path, node_id: int | None) -> Reading | str:
-    """python-canopen's reading of `path`, or the reason it could not read it."""
+def canopen_od(path: Path, node_id: int | None = None) -> Any:
+    """python-canopen's object dictionary of `path`, or the reason (a str) it could not read it."""
     try:
         with quiet():
-            od = canopen.import_od(str(path), node_id)
+            return canopen.import_od(str(path), node_id)
     except Exception as error:  # any failure of the peer is its verdict on the file
         return f"{type(error).__name__}: {error}"
-    out: Reading = {}
+
+
+def canopen_objects(od: Any) -> Iterator[tuple[int, Any, dict[int, Any] | None]]:
+    """(index, object, its sub-indices) of every object python-canopen read; sub-indices None for a VAR."""
     for index, obj in od.indices.items():
-        if isinstance(obj, canopen.objectdictionary.ODVariable):
+        variable = isinstance(obj, canopen.objectdictionary.ODVariable)
+        yield index, obj, None if variable else obj.subindices
+
+
+def canopen_reading(path: Path, node_id: int | None) -> Reading | str:
+    """python-canopen's reading of `path`, or the reason it could not read it."""
+    od = canopen_od(path, node_id)
+    if isinstance(od, str):
+        return od
+    out: Reading = {}
+    for index, obj, subs in canopen_objects(od):
+        if subs is None:
             out[(index, 0)] = _variable(obj)
             continue
         out[(index, -1)] = {"kind": type(obj).__name__, "name": obj.name}
-        for subindex, var in obj.subindices.items():
+        for subindex, var in subs.items():
             out[(index, subindex)] = _variable(var)
     return out
 

@@ -7,6 +7,7 @@ import importlib.util
 import itertools
 import random
 import re
+import shutil
 import struct
 import sys
 import unicodedata
@@ -24,6 +25,8 @@ from cantools_od.cli.gen import command as gen_command
 from cantools_od.render import renderer
 from cantools_od.views.codegen import DeviceView, build_view
 
+from support import EXAMPLES, assert_golden
+
 GOLDEN = Path(__file__).resolve().parent / "gen" / "golden"
 _COUNTER = itertools.count()
 
@@ -38,6 +41,17 @@ def generate(path: Path, target: str, name: str, node_id: int | None = None) -> 
     files = renderer(target)(view_of(path, name, node_id))
     assert len(files) == 1, files
     return next(iter(files.values()))
+
+
+def assert_example_golden(name: str, target: str, suffix: str, tmp_path: Path) -> None:
+    """What `target` makes for the shipped example `name` is its golden file, and the same for a copy of
+    the example elsewhere (the output does not depend on where the file is)."""
+    stem = Path(name).stem
+    text = generate(EXAMPLES / name, target, stem)
+    copy = tmp_path / name
+    shutil.copy(EXAMPLES / name, copy)
+    assert generate(copy, target, stem) == text
+    assert_golden(GOLDEN / target / f"{stem}{suffix}", text)
 
 
 def run_gen(*args: str | Path) -> Result:

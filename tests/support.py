@@ -34,11 +34,15 @@ def corpus_devices() -> list[Path]:
     return devices
 
 
-def corpus_params() -> list[object]:
-    files = corpus_devices()
+def file_params(files: list[Path], absent: str) -> list[object]:
+    """One pytest parameter a file (named by the file), or one skipped parameter saying what is absent."""
     if not files:
-        return [pytest.param(None, marks=pytest.mark.skip(reason="../shared/eds-corpus is absent"))]
+        return [pytest.param(None, marks=pytest.mark.skip(reason=absent))]
     return [pytest.param(path, id=path.name) for path in files]
+
+
+def corpus_params() -> list[object]:
+    return file_params(corpus_devices(), "../shared/eds-corpus is absent")
 
 
 def corpus_file(name: str) -> Path:

@@ -58,3 +58,18 @@ def test_gen_writes_nothing_when_it_refuses(tmp_path: Path, monkeypatch: pytest.
     result = CliRunner().invoke(main, ["gen", "bad.eds", "-t", "c", "-o", "out"])
     assert result.exit_code == 1 and "[GEN001]" in result.output
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("args", [["lint"], ["lint", "--fix"], ["dump"], ["fmt"], ["convert", "-o", "out.eds"]])
+def test_json_that_is_no_model_is_refused_with_one_line(
+    tmp_path: Path, args: list[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """JSN001: a .json file that `dump --format json` did not write is refused, exit 2, and never rewritten."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "device.json").write_bytes(BAD_INPUTS["broken-json.json"])
+    result = CliRunner().invoke(main, [args[0], "device.json", *args[1:]])
+    assert result.exit_code == 2, result.output
+    lines = [line for line in result.output.splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].endswith("[JSN001]"), result.output
+    assert (tmp_path / "device.json").read_bytes() == BAD_INPUTS["broken-json.json"]
+    assert not (tmp_path / "out.eds").exists()

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from support import ROOT
+from support import ROOT, file_params
 
 SHARED = ROOT.parent / "shared"
 XDD_CORPUS = SHARED / "eds-corpus" / "xdd"
@@ -22,10 +22,7 @@ def xdd_files() -> list[Path]:
 
 
 def xdd_params() -> list[object]:
-    files = xdd_files()
-    if not files:
-        return [pytest.param(None, marks=pytest.mark.skip(reason="../shared is absent"))]
-    return [pytest.param(path, id=path.name) for path in files]
+    return file_params(xdd_files(), "../shared is absent")
 
 
 def shared_file(path: Path) -> Path:

@@ -25,7 +25,8 @@
 #   OD_NAME     for the `canopennode` target: the base name of CANopenNode's object dictionary
 #               files and symbols; default OD (OD.h/OD.c, which CANopen.c includes). Like `c`,
 #               the target adds <OD_NAME>.c to <target>'s sources and OUTPUT_DIR to its include
-#               directories; a <EDS stem>.canopennode.toml beside the EDS is tracked by the depfile.
+#               directories. Its settings file <EDS stem>.canopennode.toml beside the EDS is tracked
+#               like the default pin file: creating, editing or deleting it regenerates.
 #
 # Call it in the directory that defines <target> (CMake attaches custom commands to targets of the
 # same directory). Which cantools-od runs:
@@ -146,23 +147,11 @@ function(cantools_od_generate target)
     list(APPEND _depends "${_pins}")
   endif()
   get_filename_component(_eds_name "${_eds}" NAME)
+  string(REGEX REPLACE "\\.[^./]*$" "" _eds_base "${_eds}")
   if(NOT arg_PINS)
-    # The default pin file may not exist yet, and a build step cannot depend on a missing file: a
-    # target run on every build keeps a copy of it in the build folder (empty while there is none),
-    # rewritten only when that changes, and generation depends on the copy.
-    string(REGEX REPLACE "\\.[^./]*$" "" _eds_base "${_eds}")
-    set(_pins_copy "${_work}/pins.ids.toml")
-    add_custom_target("${target}_cantools_od_${_name}_pins" ALL
-      COMMAND "${CMAKE_COMMAND}" "-DPINS=${_eds_base}.ids.toml" "-DCOPY=${_pins_copy}"
-              -P "${_cantools_od_module_dir}/cantools_od_pins.cmake"
-      BYPRODUCTS "${_pins_copy}"
-      COMMENT "Checking ${_eds_name}'s pin file"
-      VERBATIM)
-    get_target_property(_target_type "${target}" TYPE)
-    if(NOT _target_type STREQUAL "INTERFACE_LIBRARY" OR NOT CMAKE_VERSION VERSION_LESS 3.19)
-      add_dependencies("${target}" "${target}_cantools_od_${_name}_pins") # also when building only it
-    endif()
-    list(APPEND _depends "${_pins_copy}")
+    _cantools_od_track("${target}" "${_name}_pins" "${_eds_base}.ids.toml" "${_work}/pins.ids.toml"
+                       "Checking ${_eds_name}'s pin file")
+    list(APPEND _depends "${_work}/pins.ids.toml")
   endif()
   list(GET _command 0 _program)
   if(IS_ABSOLUTE "${_program}" AND EXISTS "${_program}" AND NOT CANTOOLS_OD_COMMAND)
@@ -198,8 +187,10 @@ function(cantools_od_generate target)
     target_include_directories("${target}" ${_scope} "${_out}")
   endif()
   if("canopennode" IN_LIST arg_TARGETS)
+    _cantools_od_track("${target}" "${_name}_canopennode" "${_eds_base}.canopennode.toml"
+                       "${_work}/canopennode.toml" "Checking ${_eds_name}'s canopennode settings")
     _cantools_od_canopennode("${target}" "${_eds}" "${_out}" "${_work}" "${arg_OD_NAME}" "${_command}"
-                             "${_options}" "${_depends}" "${_scope}" "${_sources_scope}")
+                             "${_options}" "${_depends};${_work}/canopennode.toml" "${_scope}" "${_sources_scope}")
   endif()
   if(_others)
     # The file names of these targets are not known here: a stamp file stands for them.
@@ -219,6 +210,23 @@ function(cantools_od_generate target)
   endif()
 endfunction()
 
+# An optional input beside the EDS (the pin file, the canopennode settings) may not exist yet, and a
+# build step cannot depend on a missing file: a target run on every build keeps a copy of it in the
+# build folder (empty while there is none), rewritten only when that changes; generation depends on
+# the copy.
+function(_cantools_od_track target key tracked copy comment)
+  add_custom_target("${target}_cantools_od_${key}" ALL
+    COMMAND "${CMAKE_COMMAND}" "-DTRACKED=${tracked}" "-DCOPY=${copy}"
+            -P "${_cantools_od_module_dir}/cantools_od_track.cmake"
+    BYPRODUCTS "${copy}"
+    COMMENT "${comment}"
+    VERBATIM)
+  get_target_property(_target_type "${target}" TYPE)
+  if(NOT _target_type STREQUAL "INTERFACE_LIBRARY" OR NOT CMAKE_VERSION VERSION_LESS 3.19)
+    add_dependencies("${target}" "${target}_cantools_od_${key}") # also when building only it
+  endif()
+endfunction()
+
 # The canopennode target: CANopenNode v4's <OD_NAME>.h/.c, compiled into <target>.
 function(_cantools_od_canopennode target eds out work od_name command options depends scope sources_scope)
   if(NOT od_name)
@@ -226,21 +234,15 @@ function(_cantools_od_canopennode target eds out work od_name command options de
   endif()
   get_filename_component(_eds_name "${eds}" NAME)
   set(_outputs "${out}/${od_name}.h" "${out}/${od_name}.c")
-  set(_depfile "${work}/canopennode.d")
-  set(_depfile_args)
-  if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.20 OR CMAKE_GENERATOR MATCHES "Ninja")
-    set(_depfile_args DEPFILE "${_depfile}")
-  endif()
   set(_touch) # as for `c`: fresh timestamps where the build tool does not restat
   if(NOT CMAKE_GENERATOR MATCHES "Ninja")
     set(_touch COMMAND "${CMAKE_COMMAND}" -E touch_nocreate ${_outputs})
   endif()
   add_custom_command(
     OUTPUT ${_outputs}
-    COMMAND ${command} gen "${eds}" -t canopennode --name "${od_name}" ${options} --depfile "${_depfile}"
+    COMMAND ${command} gen "${eds}" -t canopennode --name "${od_name}" ${options}
     ${_touch}
-    DEPENDS ${depends}
-    ${_depfile_args}
+    DEPENDS ${depends} # the EDS, the pin file and the settings file: no depfile needed
     COMMENT "Generating ${od_name}.h and ${od_name}.c (CANopenNode) from ${_eds_name}"
     VERBATIM)
   target_sources("${target}" ${sources_scope} ${_outputs})

@@ -13,9 +13,9 @@ from ..model.cia301.pdo import (
     PDO_SPAN,
     PREDEFINED,
     RX,
-    U8,
     count_pdos,
 )
+from ..model.datatypes import UNSIGNED8
 from . import ini
 from .keys import Kind
 from .report import Report
@@ -34,7 +34,7 @@ def implicit_sub(parent: Object, subindex: int) -> SubObject:
     """The sub-object CompactSubObj implies at `subindex` of `parent`."""
     if subindex == 0:
         return SubObject(
-            name=NR_OF_OBJECTS, data_type=0x0005, access=AccessType.RO, pdo_mapping=False,
+            name=NR_OF_OBJECTS, data_type=UNSIGNED8.index, access=AccessType.RO, pdo_mapping=False,
             default=parent.compact_sub_obj, implicit=True,
         )  # fmt: skip
     return SubObject(
@@ -173,7 +173,7 @@ def _comm_object(index: int, mask: int, cob_id: int | NodeIdExpr, direction: str
             default: int | NodeIdExpr = {1: cob_id, 2: 0xFF}.get(subindex, 0)
             subs[subindex] = SubObject(name=name, data_type=dtype, access=AccessType.RW, default=default, implicit=True)
     subs[0] = SubObject(
-        name="Highest sub-index supported", data_type=U8, access=AccessType.RO,
+        name="Highest sub-index supported", data_type=UNSIGNED8.index, access=AccessType.RO,
         default=max(subs, default=0), implicit=True,
     )  # fmt: skip
     kind = "RPDO" if direction == RX else "TPDO"
@@ -185,7 +185,11 @@ def _comm_object(index: int, mask: int, cob_id: int | NodeIdExpr, direction: str
 
 def _mapping_object(index: int, direction: str) -> Object:
     kind = "RPDO" if direction == RX else "TPDO"
-    subs = {0: SubObject(name="Number of mapped objects", data_type=U8, access=AccessType.RW, default=0, implicit=True)}
+    subs = {
+        0: SubObject(
+            name="Number of mapped objects", data_type=UNSIGNED8.index, access=AccessType.RW, default=0, implicit=True
+        )
+    }
     for subindex in range(1, MAX_ENTRIES + 1):
         subs[subindex] = SubObject(
             name=f"Mapped object {subindex}", data_type=MAPPING_ENTRY_TYPE, access=AccessType.RW, default=0,

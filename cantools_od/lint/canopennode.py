@@ -14,11 +14,25 @@ import re
 from collections.abc import Iterator
 
 from ..model import Device, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
-from ..model.canopennode import CONSECUTIVE, COUNT_LIMITS, NODEID_AREAS, count_label_for, standard_storage_group
+from ..model.canopennode import (
+    COMPANIONS,
+    CONSECUTIVE,
+    COUNT_LIMITS,
+    NODEID_AREAS,
+    REQUIRED_COUNTS,
+    count_label_for,
+    standard_storage_group,
+)
+from ..model.datatypes import DOMAIN, INDEX_BY_NAME, REAL32, UNSIGNED8
+from . import examples as ex
 from .rules import Context, Finding, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 PROFILE = "canopennode"
+# Rule examples: an ARRAY of two INTEGER16 gains, its sub-index 0 and one gain.
+_COUNT = ("Highest sub-index supported", UNSIGNED8.index, "ro", 2)
+_GAIN = ("Gain", INDEX_BY_NAME["INTEGER16"], "rw", 0)
+_ARRAY = ex.record(0x2000, "Gains", {0: _COUNT, 1: _GAIN, 2: _GAIN}).replace("ObjectType=0x9", "ObjectType=0x8", 1)
 _C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _SUPPORTED = (ObjectKind.VAR, ObjectKind.DOMAIN, ObjectKind.ARRAY, ObjectKind.RECORD)
 
@@ -47,6 +61,7 @@ a DataType, with an unknown index or with a complex type (PDO_MAPPING, IDENTITY.
 type cannot be laid out: the exporter has no C type for it. Fix: give the entry the basic type
 it holds; there is no automatic fix.""",
     "[2000]\nParameterName=Mapping\nObjectType=0x7\nDataType=0x0021\nAccessType=rw",
+    fixed="[2000]\nParameterName=Mapping\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def unsupported_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -68,12 +83,13 @@ def unsupported_type(ctx: Context) -> Iterator[Finding]:
 The stack keeps sub-index 0 of an ARRAY as `uint8_t` (`OD_obj_array_t.dataOrig0`) and reads it
 as the number of entries; CiA 301 defines it as UNSIGNED8 too. Another type there makes the
 generated data disagree with what the stack reads. Fix: DataType=0x0005 on sub-index 0.""",
-    "[1010sub0]\nParameterName=Highest sub-index supported\nDataType=0x0007",
+    "; also: EDS025 (CiA 301 says the same)\n" + _ARRAY.replace("0x0005", "0x0007", 1),
+    fixed=_ARRAY,
 )
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         sub0 = obj.subs.get(0)
-        if obj.has_subs and sub0 is not None and sub0.data_type not in (None, 0x0005):
+        if obj.has_subs and sub0 is not None and sub0.data_type not in (None, UNSIGNED8.index):
             message = f"{obj.index:04X}h sub0 has DataType {sub0.data_type:#06x}, the stack needs UNSIGNED8"
             yield ctx.report("CNO002", message, ctx.at(ctx.section_of(obj, sub0), "DataType"))
 
@@ -87,7 +103,8 @@ A CANopenNode ARRAY is one C array: one element type, one element size and one a
 (`OD_obj_array_t.attribute`) for sub-indices 1 to n. Elements with another DataType, AccessType
 or PDOMapping than sub-index 1 cannot be represented; the exporter would silently use
 sub-index 1's. Fix: make the elements alike, or declare the object as a RECORD.""",
-    "[2000sub1]\nDataType=0x0007\nAccessType=rw\n\n[2000sub2]\nDataType=0x0006\nAccessType=ro",
+    _ARRAY.replace("AccessType=rw", "AccessType=ro", 2).replace("AccessType=ro", "AccessType=rw", 2),
+    fixed=_ARRAY,
 )
 def array_elements(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -114,7 +131,10 @@ sub-entries from the OD list, so an ARRAY's sub-indices must run 0, 1, ... n wit
 ARRAY with no element would be a zero-length C array, which C forbids, and a RECORD needs
 sub-index 0 plus at least one member. Fix: add the missing sub-indices (or use a RECORD, whose
 sub-indices may have gaps).""",
-    "[2000]\nObjectType=0x8\nSubNumber=2\n\n[2000sub0]\n...\n\n[2000sub3]\n...",
+    ex.record(0x2000, "Gains", {0: (*_COUNT[:3], 3), 1: _GAIN, 3: _GAIN}).replace(
+        "ObjectType=0x9", "ObjectType=0x8", 1
+    ),
+    fixed=_ARRAY,
 )
 def array_shape(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -145,19 +165,20 @@ period), SRDO 13FEh and 13FFh, without a fallback. These follow the stack's defa
 a build that turns a function off can ignore the code in `[tool.cantools-od]`. Fix: add the
 object; the count label follows from its index (or set `count_label` in the .canopennode.toml
 file).""",
-    "[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001\n; no 1014h, no 1017h",
+    "; no [1017]\n[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
+    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n"
+    + ex.var(0x1017, "Producer heartbeat time", 0x0006, mapping=0),
 )
 def required_counts(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
     if ctx.options.profile != PROFILE:
         return
-    required = (("NMT", 0x1000), ("EM", 0x1001), ("EM_PROD", 0x1014), ("HB_CONS", 0x1016), ("HB_PROD", 0x1017))
-    for label, index in required:
+    for label, index in REQUIRED_COUNTS:
         if label not in counts:
             message = f"no object counts as {label} (usually {index:04X}h): CANopen.c needs OD_CNT_{label}"
             yield ctx.report("CNO005", message, ctx.at(ctx.device.mandatory_objects or ctx.device.file_info))
     present = {obj.index for obj in _objects(ctx)}
-    for label, needed in (("EM", (0x1003,)), ("SYNC", (0x1006,)), ("SRDO", (0x13FE, 0x13FF))):
+    for label, needed in COMPANIONS:
         for index in needed if label in counts else ():
             if index not in present:
                 message = f"{counts[label][0].index:04X}h counts as {label}, so CANopen.c also uses {index:04X}h"
@@ -185,7 +206,8 @@ position: SDO server i is 1200h+i, RPDO i is 1400h+i with mapping 1600h+i, TPDO 
 1A00h+i, SRDO i 1301h+i with 1381h+i, so these must be consecutive and paired. Count labels and
 storage groups become C names, so they must be C identifiers. Fix: correct the objects or the
 `count_label` setting.""",
-    "[1400]\n...\n[1402]\n; 1401h missing: RPDO 2 would use 1402h",
+    ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=3) + ex.CONTROLWORD + ex.TARGET_POSITION,
+    fixed=ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=2) + ex.CONTROLWORD + ex.TARGET_POSITION,
 )
 def count_limits(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
@@ -238,7 +260,9 @@ def _consecutive(ctx: Context, label: str, objects: list[Object]) -> Iterator[Fi
 The generator writes every default into C initializers. A DefaultValue that could not be read
 as the entry's type, or a REAL32 beyond the float range, has no C spelling. Fix: write the
 value in the entry's type.""",
-    "[2000]\nDataType=0x0008\nDefaultValue=1e40",
+    "; also: EDS030 (the value is not a REAL32)\n"
+    + "[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e40\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e30\nPDOMapping=0",
 )
 def unstorable_default(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -246,7 +270,7 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
             value = var.parameter_value if var.parameter_value is not None else var.default
             dtype = ctx.device.entry_type(var, obj)
             bad = isinstance(value, RawValue)
-            if dtype is not None and dtype.index == 0x0008 and isinstance(value, (int, float)):
+            if dtype is not None and dtype.index == REAL32.index and isinstance(value, (int, float)):
                 bad = math.isfinite(value) and abs(value) > 3.4028234663852886e38
             if bad:
                 where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
@@ -264,7 +288,10 @@ CANopenNode stores `$NODEID+n` as n: the stack adds the node-ID itself, but only
 COB-IDs it manages (1014h EMCY, 1200h-12FFh SDO, 1400h-15FFh RPDO, 1800h-19FFh TPDO, when they
 hold their pre-defined value). Elsewhere the device would see n alone. Fix: write the value the
 device needs, or set it at run time in the application.""",
-    "[2000]\nParameterName=Reply COB-ID\nDataType=0x0007\nDefaultValue=$NODEID+0x700",
+    "[2000]\nParameterName=Reply COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+    "DefaultValue=$NODEID+0x700\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Reply COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+    "DefaultValue=0x705\nPDOMapping=0",
 )
 def nodeid_elsewhere(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -286,9 +313,11 @@ def nodeid_elsewhere(ctx: Context) -> Iterator[Finding]:
 A VISIBLE_STRING, UNICODE_STRING or OCTET_STRING gets as many bytes as its default, or
 `string_length_min` when larger. A writable string with an empty default and no minimum gets
 none: SDO writes to it fail until the application provides memory through OD_extension_init.
-CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS cannot say it.
-Fix: set `string_length_min` for the entry in `<stem>.canopennode.toml`.""",
+CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS cannot say it.""",
     "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nDefaultValue=",
+    fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=drive\n"
+    "PDOMapping=0",
+    fix_safety="No automatic fix: set `string_length_min` for the entry in `<stem>.canopennode.toml`.",
 )
 def string_without_memory(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -296,7 +325,7 @@ def string_without_memory(ctx: Context) -> Iterator[Finding]:
             dtype = ctx.device.entry_type(var, obj)
             if dtype is None or dtype.kind not in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS):
                 continue
-            if dtype.index == 0x000F or var.access is None or not var.access.writable:
+            if dtype.index == DOMAIN.index or var.access is None or not var.access.writable:
                 continue
             value = var.parameter_value if var.parameter_value is not None else var.default
             minimum = var.canopennode.string_length_min if var.canopennode else None

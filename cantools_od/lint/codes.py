@@ -4,7 +4,8 @@ Like ruff's `codes.rs`, this table is the one list of codes: a family's module d
 code means (`rule()` for a check, `declare()` for a code reported while reading, importing or
 generating: severity, summary, documentation), and this table says which codes exist, which family
 owns them and what they are called. A test fails when the two disagree. Adding a code is one
-line here plus its declaration in the family's module.
+line here plus its declaration in the family's module, with a failing and a fixed example (see
+`exampleset` for what an example can say), which tests/test_rule_docs.py runs.
 
 `--select`/`--ignore` take codes, code prefixes (`PDO`, `EDS03`) and family names (`cobid`).
 """
@@ -24,13 +25,12 @@ class Family:
     module: str  # the module of cantools_od.lint that declares the family's codes
     title: str
     refs: str = ""  # the sections of the standards the family checks
-    eds_examples: bool = True  # its examples are EDS fragments that lint runs (not XML, tables or commands)
 
 
 # Families in the order the linter runs them; each is imported explicitly by `load()`.
 FAMILIES: dict[str, Family] = {
     "reader": Family("reader", "Reported while reading an EDS/DCF", "CiA 306 §4 (file structure, value syntax §4.3)"),
-    "xdd": Family("xdd", "Reported while reading an XDD/XDC", "CiA 311", eds_examples=False),
+    "xdd": Family("xdd", "Reported while reading an XDD/XDC", "CiA 311"),
     "syntax": Family("syntax", "File structure: sections, keys, lines", "CiA 306 §4, [Comments] §4.6.5"),
     "objects": Family("objects", "Object and sub-object sections", "CiA 306 §4.6.3; CiA 301 data types"),
     "dcf": Family("dcf", "DCF additions and the module concept", "CiA 306 §5, §6"),
@@ -52,13 +52,16 @@ FAMILIES: dict[str, Family] = {
     "standard": Family(
         "standard", "CiA 301/302 standard objects (and CiA 402 ones) against their definitions", "CiA 301 §7.5; CiA 402"
     ),
-    # Its examples are fragments of a CANopenNode project, which the EDS frame of the examples is not.
     "canopennode": Family(
-        "canopennode", "What the CANopenNode v4 stack needs (lint --profile canopennode)", eds_examples=False
+        "canopennode",
+        "What the CANopenNode v4 stack needs (lint --profile canopennode)",
+        "CiA 301 §7.4 (object dictionary), §7.5.2 (the communication objects the stack implements)",
     ),
-    "import": Family("tool", "Reported by import-table", eds_examples=False),
-    "gen": Family("tool", "Reported by gen", eds_examples=False),
-    "lint": Family("tool", "Reported by the linter about itself", eds_examples=False),
+    "import": Family(
+        "tool", "Reported by import-table", "CiA 301 §7.4 (object dictionary entries); CiA 306 §4.6.3 (their keys)"
+    ),
+    "gen": Family("tool", "Reported by gen", "CiA 301 §7.4.8 (PDO mapping), §7.5.2.35-38 (PDO parameters)"),
+    "lint": Family("tool", "Reported by the linter about itself", "CiA 306 §4 (the file the rules read)"),
 }
 
 # code -> kebab-case name, per family.

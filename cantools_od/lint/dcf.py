@@ -6,6 +6,7 @@ import re
 from collections.abc import Iterator
 
 from ..model import Device, Object, RawSection, Severity, Variable
+from ..model.datatypes import DOMAIN
 from . import examples as ex
 from .common import explicit_vars, file_start, given, invalid, where
 from .rules import Context, Finding, rule
@@ -48,7 +49,7 @@ def file_access(ctx: Context) -> Iterator[Finding]:
 
 def _domain(device: Device, obj: Object, var: Variable) -> bool:
     dtype = device.entry_type(var, obj)
-    return dtype is not None and dtype.index == 0x000F
+    return dtype is not None and dtype.index == DOMAIN.index
 
 
 @rule(
@@ -182,7 +183,10 @@ In the module concept (CiA 306 §6) [SupportedModules] NrOfEntries counts the mo
 M1..Mn, each with an [M<x>ModuleInfo]; [M<x>FixedObjects] and [M<x>SubExtends] count their
 numbered entries in NrOfEntries, and each listed index has its [M<x>Fixed<index>] or
 [M<x>SubExt<index>] section; [ConnectedModules] lists module numbers 1..n.""",
-    "[SupportedModules]\nNrOfEntries=2\n[M1ModuleInfo]\nProductName=Input module",
+    "; also: DIA012 (any module section)\n[SupportedModules]\nNrOfEntries=2\n\n[M1ModuleInfo]\n"
+    "ProductName=Input module",
+    fixed="; also: DIA012 (any module section)\n[SupportedModules]\nNrOfEntries=1\n\n[M1ModuleInfo]\n"
+    "ProductName=Input module",
 )
 def modules(ctx: Context) -> Iterator[Finding]:
     sections = {raw.name.lower(): raw for raw in ctx.device.module_sections}

@@ -1,24 +1,24 @@
 """Rule examples as files: a documented example is an EDS fragment; `frame()` makes it a whole EDS.
 
 The rule documentation (`cantools-od rules`, docs/rules.md) and the tests run every example
-through `run()`: the failing example must trigger its rule, the fixed one must not.
+(see `exampleset`): the failing example must trigger its rule, the fixed one must not.
 
 The frame holds what every EDS needs ([FileInfo], [DeviceInfo], [DummyUsage], the mandatory
 objects 1000h, 1001h, 1018h and the three object lists, computed from the objects the file ends
 up with), so that an example shows only what its rule is about. A section the fragment gives
 replaces the frame's; a [DeviceInfo] it gives is completed with the frame's keys it does not set
-(write `BaudRate_125=0` to say a key is 0).
+(write `BaudRate_125=0` to say a key is 0). A section the fragment gives as an object replaces the
+frame's object with its sub-objects. With `lint --profile canopennode` the frame also holds the
+objects the CANopenNode stack requires (1003h, 1014h, 1016h, 1017h).
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Set
 
-from ..eds.reader import read_bytes
-from ..model.cia301.objects import MANDATORY, MANUFACTURER_AREA
+from ..model.cia301.objects import DATA_TYPE_AREA, MANDATORY, MANUFACTURER_AREA
 from ..model.cia301.pdo import COMM_BASE, MAP_BASE, PREDEFINED, RX, TX, count_pdos
-from .rules import Finding
-from .runner import lint
 
 _SECTION = re.compile(r"^\[([^\]]+)\]", re.MULTILINE)
 _FRAME = {
@@ -44,7 +44,26 @@ _FRAME = {
     "1018sub3": "ParameterName=Revision number\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\nDefaultValue=0x3\n"
     "PDOMapping=0",
 }
+# What `lint --profile canopennode` needs besides (CNO005): the error history, the EMCY COB-ID, the heartbeat
+# consumer and producer.
+_CANOPENNODE_FRAME = {
+    "1003": "ParameterName=Pre-defined error field\nObjectType=0x8\nSubNumber=2",
+    "1003sub0": "ParameterName=Number of errors\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=0\n"
+    "PDOMapping=0",
+    "1003sub1": "ParameterName=Standard error field\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\nDefaultValue=0\n"
+    "PDOMapping=0",
+    "1014": "ParameterName=COB-ID EMCY\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=$NODEID+0x80\n"
+    "PDOMapping=0",
+    "1016": "ParameterName=Consumer heartbeat time\nObjectType=0x8\nSubNumber=2",
+    "1016sub0": "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+    "DefaultValue=1\nPDOMapping=0",
+    "1016sub1": "ParameterName=Consumer heartbeat time 1\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
+    "DefaultValue=0\nPDOMapping=0",
+    "1017": "ParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
+    "PDOMapping=0",
+}
 _LISTS = ("MandatoryObjects", "OptionalObjects", "ManufacturerObjects")
+_OBJECT = re.compile(r"^\[([0-9A-Fa-f]{4})(?:\]|[ \t]*$)", re.MULTILINE)
 
 
 def _listing(name: str, indices: list[int]) -> str:
@@ -52,12 +71,12 @@ def _listing(name: str, indices: list[int]) -> str:
     return f"[{name}]\n" + "\n".join(lines) + "\n"
 
 
-def _merged_info(fragment_lines: list[str], frame_keys: list[str]) -> list[tuple[str, int | None]]:
+def _merged_info(fragment: list[tuple[str, int]], frame_keys: list[str]) -> list[tuple[str, int | None]]:
     """The fragment's lines (with their numbers), the frame's [DeviceInfo] keys it does not set added
     at the end of its [DeviceInfo] section (numbered None)."""
     out: list[tuple[str, int | None]] = []
     in_info, given = False, set()
-    for number, line in enumerate(fragment_lines, 1):
+    for line, number in fragment:
         if line.startswith("["):
             if in_info:
                 out += [(key, None) for key in frame_keys if key.split("=", 1)[0].lower() not in given]
@@ -70,16 +89,30 @@ def _merged_info(fragment_lines: list[str], frame_keys: list[str]) -> list[tuple
     return out
 
 
-def _framed(fragment: str) -> tuple[str, dict[int, int]]:
-    """The framed text, and for each of its lines that comes from the fragment, the fragment's line."""
-    given = {name.lower() for name in _SECTION.findall(fragment)}
-    parts = [f"[{name}]\n{body}\n" for name, body in _FRAME.items() if name.lower() not in given]
+def _left_out(name: str, given: set[str]) -> bool:
+    """Whether the frame leaves section `name` out: the fragment gives it (or, for a sub-object, its
+    object: the fragment's object is all of it), or says the file has none."""
+    name = name.lower()
+    return name in given or ("sub" in name and name.split("sub", 1)[0] in given)
+
+
+def framed_lines(
+    fragment: list[tuple[str, int]], omit: Set[str] = frozenset(), profile: str | None = None
+) -> tuple[str, dict[int, int]]:
+    """The framed text of a fragment given as (line, its number), and for each line of the framed text
+    that comes from the fragment, the fragment's number. `omit`: sections (lower case) the file has not."""
+    while fragment and not fragment[0][0].strip():
+        fragment = fragment[1:]
+    given = {name.lower() for line, _ in fragment for name in _SECTION.findall(line)} | omit
+    frame = {**_FRAME, **(_CANOPENNODE_FRAME if profile == "canopennode" else {})}
+    parts = [f"[{name}]\n{body}\n" for name, body in frame.items() if not _left_out(name, given)]
     head = "\n".join(parts) + "\n"
-    body = _merged_info(fragment.strip().splitlines(), _FRAME["DeviceInfo"].splitlines())
+    info = [] if "deviceinfo" in omit else _FRAME["DeviceInfo"].splitlines()
+    body = _merged_info(fragment, info)
     first = head.count("\n") + 1
     origin = {first + i: number for i, (_, number) in enumerate(body) if number is not None}
     text = head + "".join(line + "\n" for line, _ in body)
-    objects = sorted({int(m, 16) for m in re.findall(r"^\[([0-9A-Fa-f]{4})\]", text, re.MULTILINE)})
+    objects = sorted({int(m, 16) for m in _OBJECT.findall(text)} - set(DATA_TYPE_AREA))  # data types are not listed
     text = text.replace("NrOfRXPDO={rx}", f"NrOfRXPDO={count_pdos(objects, RX)}")
     text = text.replace("NrOfTXPDO={tx}", f"NrOfTXPDO={count_pdos(objects, TX)}")
     areas = {
@@ -91,22 +124,14 @@ def _framed(fragment: str) -> tuple[str, dict[int, int]]:
     return text + "\n" + "\n".join(lists), origin
 
 
+def _numbered(fragment: str) -> list[tuple[str, int]]:
+    return [(line, number) for number, line in enumerate(fragment.splitlines(), 1)]
+
+
 def frame(fragment: str) -> str:
     """The fragment inside a clean EDS: the frame's sections it does not give, its [DeviceInfo]
     completed with the frame's keys it does not set."""
-    return _framed(fragment)[0]
-
-
-def run(fragment: str, name: str = "example.eds") -> tuple[str, list[Finding]]:
-    """The framed text and every finding lint reports for it."""
-    text = frame(fragment)
-    return text, lint(read_bytes(text.encode(), name))
-
-
-def fragment_line(fragment: str, text: str, line: int) -> int | None:
-    """The line of the fragment that line `line` of its framed text is, or None when it is in the frame."""
-    framed, origin = _framed(fragment)
-    return origin.get(line) if framed == text else None
+    return framed_lines(_numbered(fragment.strip()))[0]
 
 
 # --- builders for the PDO and COB-ID rule examples -----------------------------------------------------------

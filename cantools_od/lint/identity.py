@@ -42,7 +42,8 @@ def plain_int(value: Value | None) -> int | None:
 Every CANopen device implements 1000h (device type), 1001h (error register) and, since CiA 301
 v4.0, 1018h (identity object). Masters read them during boot-up to identify the device; a file
 without them cannot describe a conforming device.""",
-    "[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001\n; no [1018] section",
+    "; no [1018]\n[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001",
+    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n" + ex.identity(),
 )
 def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     listing = ctx.device.mandatory_objects
@@ -101,8 +102,7 @@ device by it; two different numbers cannot both be right. Not checked when eithe
 or 0 (not configured). A DefaultValue is the EDS's default, not this device's number: it is not
 compared.
 
-Error: the LSS master looks for a device that does not exist.
-Fix: none offered (which number is right is known only on the device).""",
+Error: the LSS master looks for a device that does not exist.""",
     (
         ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
         + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x18")
@@ -111,6 +111,7 @@ Fix: none offered (which number is right is known only on the device).""",
         ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
         + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x17")
     ),
+    fix_safety="No automatic fix (which number is right is known only on the device).",
 )
 def serial_number(ctx: Context) -> Iterator[Finding]:
     section, obj = ctx.device.commissioning, ctx.device.objects.get(IDENTITY)

@@ -11,6 +11,7 @@ from ..model.cia301.connections import producers
 from ..model.cia301.objects import COB_ID_SYNC
 from ..model.cia301.pdo import RX, TX, MapEntry, Pdo, pdos
 from ..model.cia301.slots import slot
+from . import examples as ex
 from .pdoread import with_severity
 from .rules import Context, Finding, LintOptions, rule
 
@@ -26,7 +27,13 @@ on the total length and on where each mapped object starts and ends; one node at
 SYNC (1005h bit 30). Errors: shared node-IDs, shared producers, layouts that differ, several SYNC
 producers. Warnings: an RPDO no node sends, objects of one length but different data types, a
 node without a node-ID (its `$NODEID` COB-IDs are then skipped).""",
-    "; a.dcf\n[1800sub1]\nParameterValue=0x185\n; b.dcf\n[1801sub1]\nParameterValue=0x185",
+    "; file: a.dcf\n" + ex.NODE_5 + "; file: b.dcf\n" + ex.NODE_5 + "; $ cantools-od lint --network a.dcf b.dcf",
+    fixed="; file: a.dcf\n"
+    + ex.NODE_5
+    + "; file: b.dcf\n"
+    + ex.NODE_5.replace("NodeID=5", "NodeID=6")
+    + "; $ cantools-od lint --network a.dcf b.dcf",
+    fix_safety="No automatic fix: which node changes its node-ID or its COB-IDs is the integrator's decision.",
 )
 def check_single_device(ctx: Context) -> Iterable[Finding]:
     """COB011 needs the whole network: `lint_network` reports it, a single file has nothing to say."""

@@ -11,7 +11,7 @@ from dataclasses import replace
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
 from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
 from ..model.cia301.pdo import PDO_AREA
-from ..model.datatypes import STANDARD_TYPES
+from ..model.datatypes import STANDARD_TYPES, STATIC_TYPE_AREA, UNSIGNED8
 from .common import explicit_objects, explicit_vars, given, where
 from .rules import Context, Finding, Fix, rule
 
@@ -81,8 +81,7 @@ and sub-objects have no SubNumber. Tools disagree about what such keys mean.
 Error, as a rule: a tool may take the key at its word (sub-objects on a VAR, a mappable DOMAIN).
 Warning where the value says what the object type already says: `SubNumber=0` on a VAR or a
 sub-object, `PDOMapping=0` on a DOMAIN (CANopenNode's editors write both); every tool reads them
-as if they were absent.
-Fix: none offered; delete the key.""",
+as if they were absent.""",
     (
         "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n[2000sub0]\n"
         "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
@@ -95,6 +94,7 @@ Fix: none offered; delete the key.""",
         "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: delete the key.",
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):
@@ -255,7 +255,7 @@ def sub0_type(ctx: Context) -> Iterator[Finding]:
         sub0 = obj.subs.get(0)
         if sub0 is None:
             yield ctx.report("EDS025", f"[{obj.index:04X}]: no sub-index 0 ({obj.kind.name})", ctx.at(obj))
-        elif sub0.data_type is not None and ctx.device.entry_type(sub0, obj) is not STANDARD_TYPES[0x0005]:
+        elif sub0.data_type is not None and ctx.device.entry_type(sub0, obj) is not UNSIGNED8:
             message = f"[{obj.index:04X}sub0]: DataType=0x{sub0.data_type:04X}; sub-index 0 is UNSIGNED8 (0x0005)"
             yield ctx.report("EDS025", message, ctx.value_at(sub0, "DataType"))
 
@@ -415,7 +415,7 @@ def undefined_types(ctx: Context) -> Iterator[Finding]:
         definition = objects.get(dtype)
         if dtype in DATA_TYPE_AREA and definition is not None and definition.kind in _TYPE_KINDS:
             continue
-        reason = "reserved data type index" if 0 < dtype < 0x0020 else "no DEFTYPE/DEFSTRUCT object defines it"
+        reason = "reserved data type index" if dtype in STATIC_TYPE_AREA else "no DEFTYPE/DEFSTRUCT object defines it"
         message = f"{where(obj, subindex)}: DataType=0x{dtype:04X}: {reason}"
         yield ctx.report("EDS080", message, ctx.value_at(var, "DataType"))
 
@@ -427,7 +427,9 @@ def undefined_types(ctx: Context) -> Iterator[Finding]:
     """
 Indices 0001h-0FFFh hold data types: DEFTYPE and DEFSTRUCT objects belong there and nowhere
 else, and nothing else belongs there (CiA 301, object dictionary index areas). Index 0000h is not used.""",
-    "[2000]\nParameterName=My type\nObjectType=0x5\nDataType=0x0007\nAccessType=ro",
+    "; also: DIA005 (every DEFTYPE)\n[2000]\nParameterName=My type\nObjectType=0x5\nDataType=0x0007\nAccessType=ro",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: move the definition below 1000h, or use the basic type itself as here.",
 )
 def type_area(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):

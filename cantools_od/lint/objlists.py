@@ -158,8 +158,10 @@ def _ensure(device: Device, name: str) -> ObjectList:
 An EDS has all three object lists, even when one is empty (`SupportedObjects=0`). Objects that
 a missing list would hold are reported as unlisted (EDS012); this rule reports the missing
 section itself.""",
-    "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n; no [OptionalObjects], "
-    "no [ManufacturerObjects]",
+    "; no [OptionalObjects], [ManufacturerObjects]\n"
+    "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
+    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n[OptionalObjects]\n"
+    "SupportedObjects=0\n\n[ManufacturerObjects]\nSupportedObjects=0",
 )
 def missing_list(ctx: Context) -> Iterator[Finding]:
     for name in LISTS:
@@ -267,7 +269,10 @@ def _fix_move(source: str, index: int, target: str) -> Callable[[Device], None]:
     """
 Data types (indices below 1000h, described by DEFTYPE/DEFSTRUCT objects) are not listed in the
 object lists. lely dcfchk rejects them there ("data type objects are not supported").""",
-    "[OptionalObjects]\nSupportedObjects=1\n1=0x0040",
+    "; also: DIA005 (every DEFTYPE)\n[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\n"
+    "AccessType=ro\n\n[OptionalObjects]\nSupportedObjects=1\n1=0x0040",
+    fixed="; also: DIA005 (every DEFTYPE)\n[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\n"
+    "AccessType=ro\n\n[OptionalObjects]\nSupportedObjects=0",
 )
 def data_type_listed(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in listings(ctx.device):

@@ -7,12 +7,12 @@ from collections.abc import Iterable, Iterator
 from ..model import AccessType, ObjectKind, Severity
 from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry, Pdo, dummy_type
 from ..model.cia301.slots import Slot
+from ..model.datatypes import BOOLEAN
 from . import examples as ex
 from .pdoread import device_pdos, dummies, length_fix, limits_fit, mapped_objects, named, with_severity
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
-BOOLEAN = 0x0001
 
 
 # --- records ---------------------------------------------------------------------------------
@@ -53,7 +53,10 @@ def check_pairs(ctx: Context) -> Iterator[Finding]:
 CiA 301 defines the communication parameter as a RECORD of type PDO_COMMUNICATION_PARAMETER
 (0020h) and the mapping parameter as a RECORD of type PDO_MAPPING (0021h). An ARRAY is tolerated
 for the mapping, whose entries all share one type; anything else is not a PDO record.""",
-    "[1800]\nParameterName=TPDO communication parameter 1\nObjectType=0x8",
+    "; also: EDS028 (an ARRAY's elements share one type)\n"
+    + ex.pdo("tx", "0x60410010").replace("ObjectType=0x9", "ObjectType=0x8", 1)
+    + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_record_kind(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -305,7 +308,7 @@ def check_length(ctx: Context) -> Iterator[Finding]:
             if dtype is None or dtype.bits is None or entry.bits == dtype.bits:
                 continue
             message = f"{pdo.name}: entry 0x{entry.raw:08X} maps {entry.bits} bits, but {what} is {dtype.name}"
-            if dtype.index == BOOLEAN and entry.bits == 8:  # CANopenNode's byte-sized BOOLEAN
+            if dtype.index == BOOLEAN.index and entry.bits == 8:  # CANopenNode's byte-sized BOOLEAN
                 fix = length_fix(entry, 1)
                 unsafe = Fix(fix.message, False, fix.apply) if fix is not None else None
                 message += " (1 bit; CANopenNode devices expect the byte they store it in)"
@@ -519,7 +522,8 @@ The length byte of a mapping entry is at most 40h (64 bits). Some vendors set it
 private flag (0x60410090), but CiA 301 reads the whole byte as the length: 144 bits. lint, pdo
 and gen all read it that way (PDO045, PDO046 and GEN001 follow); clearing the flag is left to
 the author.""",
-    "[1A00sub1]\nDefaultValue=0x60410090",
+    "; also: PDO045, PDO046 (the length it reads)\n" + ex.pdo("tx", "0x60410090") + ex.STATUSWORD,
+    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_length_flag(ctx: Context) -> Iterable[Finding]:
     for pdo in device_pdos(ctx):

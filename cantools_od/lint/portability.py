@@ -21,12 +21,14 @@ from ..model import (
     ValueKind,
     Variable,
 )
+from ..model.cia301.objects import DATA_TYPE_AREA
+from ..model.cia301.pdo import DUMMY_TYPES
+from ..model.datatypes import BASIC_TYPE_RANGE
 from .rules import Context, Finding, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
 
 W, INFO = Severity.WARNING, Severity.INFO
 
-_CANOPEN_DUMMIES = range(0x0001, 0x0008)
 _EXTENSION_KEYS = {keys.normalize(key) for key in EXTENSION_KEYS}
 _STRING_FIELDS = (("ParameterName", "name"), ("Denotation", "denotation"))
 
@@ -57,7 +59,7 @@ def dummy_usage(ctx: Context) -> Iterator[Finding]:
     usage = ctx.device.dummy_usage
     if usage is None:
         return
-    missing = [f"Dummy{index:04X}" for index in _CANOPEN_DUMMIES if index not in usage.enabled]
+    missing = [f"Dummy{index:04X}" for index in DUMMY_TYPES if index not in usage.enabled]
     if missing:
         message = f"[DummyUsage] lacks {', '.join(missing)}; python-canopen fails to load the file"
         yield ctx.report("DIA001", message, ctx.at(usage))
@@ -103,6 +105,7 @@ its REAL values only for lely. Reported once per file with the lely dialect, at 
 value.""",
     "[DeviceInfo]\nVendorName=Lely Industries N.V.\n[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\n"
     "DefaultValue=0x3FC00000",
+    fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1.5\nPDOMapping=0",
 )
 def real_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -149,7 +152,10 @@ def compact_record(ctx: Context) -> Iterator[Finding]:
 Data-type definitions (ObjectType 0x5/0x6) are valid CiA 306, but lely dcfchk rejects them ("not
 supported") and python-canopen skips them, failing with a KeyError on their sub-objects. Entries
 typed by them become unreadable there.""",
-    "[0040]\nParameterName=My record type\nObjectType=0x6\nSubNumber=3",
+    "[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\nAccessType=ro\n\n"
+    "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: type the entries by the basic types and delete the definition.",
 )
 def type_definitions(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -230,13 +236,18 @@ def non_ascii(ctx: Context) -> Iterator[Finding]:
 An entry typed by a DEFTYPE/DEFSTRUCT data type (DataType above 001Bh and defined in the file)
 is valid CiA 306, but python-canopen falls back to DOMAIN for it, canmatrix fails and lely does
 not support it. Undefined custom types are reported by EDS080.""",
-    "[0040]\nObjectType=0x5\nDataType=0x0007\n...\n[2000]\nParameterName=Setting\nDataType=0x0040",
+    "; also: DIA005 (the definition the type needs)\n"
+    "[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\nAccessType=ro\n\n"
+    "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0040\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: type the entry by the basic type the definition stands for.",
 )
 def custom_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
     for _, label, var in _vars(ctx.device):
         dtype = var.data_type
-        definition = objects.get(dtype) if dtype is not None and 0x001B < dtype < 0x1000 else None
+        custom = dtype in DATA_TYPE_AREA and dtype not in BASIC_TYPE_RANGE
+        definition = objects.get(dtype) if dtype is not None and custom else None
         if definition is not None and definition.kind in (ObjectKind.DEFTYPE, ObjectKind.DEFSTRUCT):
             message = f"{label} DataType=0x{dtype:04X} (a custom type); python-canopen reads it as DOMAIN"
             yield ctx.report("DIA008", message, ctx.value_at(var, "DataType"))
@@ -329,6 +340,8 @@ The module concept ([SupportedModules], [M<x>...], [ConnectedModules]) is CiA 30
 CANopenEditor reads it, partially: lely dcfchk fails on the sections and python-canopen ignores
 them, so the objects of the modules are missing there. Reported once per file.""",
     "[SupportedModules]\nNrOfEntries=1\n[M1ModuleInfo]\nProductName=Input module",
+    fixed="; the module's objects described as the device's own\n[2000]\nParameterName=Input module inputs\n"
+    "ObjectType=0x7\nDataType=0x0005\nAccessType=ro\nDefaultValue=0\nPDOMapping=1",
 )
 def module_sections(ctx: Context) -> Iterator[Finding]:
     sections = ctx.device.module_sections

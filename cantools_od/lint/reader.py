@@ -19,7 +19,10 @@ The file holds no device description: binary data (a NUL byte), nothing but blan
 without a single `[section]` header, or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
 command refuses such a file with this one line and exit code 2, and never writes to it: a
 formatter that read it as an empty device would otherwise replace it with one.""",
-    "\x7fELF\x02\x01\x01\x00...",
+    "; whole file: device.eds\nIndex,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro",
+    fixed="; file: device.eds\n[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
+    "DefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: nothing is written to a file that is no device description.",
 )
 declare(
     "JSN001",
@@ -29,7 +32,9 @@ declare(
 A file read as JSON (by its `.json` name or its leading `{`) is not a model that `dump --format json`
 or `convert -o x.json` wrote: it does not parse, or its fields are not the model's. Every command
 refuses it with this one line and exit code 2, and never writes to it.""",
-    '{"objects": 5}',
+    '; whole file: device.json\n{"objects": 5}',
+    fixed="; file: device.eds\n; $ cantools-od convert device.eds -o device.json\n; $ cantools-od lint device.json",
+    fix_safety="No automatic fix: write the JSON model with `convert` or `dump --format json`.",
 )
 declare(
     "EDS002",
@@ -44,6 +49,7 @@ of a repeated key.""",
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
+    fix_safety="No automatic fix: delete the copy that is not meant (cantools-od keeps the last value).",
 )
 declare(
     "EDS030",
@@ -57,11 +63,12 @@ kept as it is.
 
 Error: tools read another value or none. Warning for `DefaultValue=0` on a DOMAIN: CANopenNode's
 editors write it for an empty domain and CANopenNode reads it so; lely rejects it, python-canopen
-reads the byte 00h. Fix: none offered; write the value in its type's form (DOMAIN: hex byte pairs).""",
+reads the byte 00h.""",
     ("[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=twelve\nPDOMapping=0"),
     fixed=(
         "[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=12\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: write the value in its type's form (DOMAIN: hex byte pairs).",
 )
 declare(
     "EDS032",
@@ -79,6 +86,8 @@ rejects it), an inline comment after a value (CiA 306 has none), blank-separated
         "; 0x3ED: prevent homing\n[2000]\nParameterName=Homing\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0x3ED\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: write the value as CiA 306 does (decimal, or hex with 0x), a comment on its own "
+    "line.",
 )
 declare(
     "EDS033",
@@ -104,6 +113,11 @@ declare(
     """
 The file contains bytes that are not UTF-8; it was read as Windows-1252 (or Latin-1). Other
 tools may read those characters differently. Save the file as ASCII or UTF-8.""",
+    "; encoding: cp1252\n; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
+    "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
+    "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: `fmt` writes the file back as UTF-8.",
 )
 declare(
     "EDS101",
@@ -114,6 +128,7 @@ Inside a section every line is `key=value`, a `;` comment or blank. This line is
 (or stands before the first section) and is ignored.""",
     ("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue 0\nPDOMapping=0"),
     fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
+    fix_safety="No automatic fix: the line is ignored; write it as key=value, or as a `;` comment.",
 )
 declare(
     "EDS102",
@@ -121,7 +136,9 @@ declare(
     "Section header without ']'",
     """
 A line starting with `[` must end its section name with `]`.""",
-    "[1000\nParameterName=Device type",
+    "[2000\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: close the section name with `]`.",
 )
 declare(
     "EDS103",
@@ -137,6 +154,7 @@ The section is kept as text, but no tool can use it.""",
         "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=Child\nObjectType=0x7\nDataType=0x0005\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    fix_safety="No automatic fix: add the object's section, or delete the sub-object.",
 )
 declare(
     "EDS104",
@@ -150,6 +168,8 @@ decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) co
         "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=2\n\n"
         "[2000Name]\nNrOfEntries=2\n1=First\n2=Second"
     ),
+    fix_safety="Safe for a wrong NrOfEntries or ObjectLinks count: `--fix` writes the number of entries; no "
+    "automatic fix otherwise.",
 )
 
 

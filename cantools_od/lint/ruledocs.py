@@ -8,15 +8,20 @@ sections of the standards it rests on.
 from __future__ import annotations
 
 from .codes import FAMILIES, Code, codes
-from .examples import fragment_line, run
+from .exampleset import Outcome, default_name, parse, run_example
 
 _HEAD = """# Rules
 
 Every code `cantools-od` can print, generated from its registry (`cantools_od/lint/codes.py`) by
 `python -m cantools_od.lint.ruledocs > docs/rules.md`; a test keeps this file current.
 `cantools-od rules CODE` (or its name) shows the same text. Select codes with `--select`/`--ignore`
-by code, prefix or family name. Each example is run through `lint` inside a minimal valid EDS
-(the tests do the same): the failing one triggers its rule at the line shown, the fixed one is clean.
+by code, prefix or family name. Each example is run (the tests do the same): an EDS fragment through
+`lint` inside a minimal valid EDS (the canopennode codes with `--profile canopennode`, the frame then
+holding the objects the stack requires), an XDD fragment inside a minimal valid XDD. In an example,
+`; file: NAME` starts another file, `; whole file: NAME` one used as it stands, `; no [Section]` leaves
+a section out of the frame, `; encoding:` names the file's encoding, and `; $` gives the command line
+that reports the code. The failing example reports its code (and the ones `; also:` names, which come
+with it by design) and nothing else, at the line shown; the fixed one reports nothing else.
 """
 
 
@@ -24,17 +29,34 @@ def _block(text: str, language: str = "ini") -> list[str]:
     return [f"```{language}", *text.splitlines(), "```"]
 
 
+def profile_of(code: Code) -> str | None:
+    """The target profile an example runs with: the canopennode codes run under `lint --profile canopennode`."""
+    return "canopennode" if code.family == "canopennode" else None
+
+
+def run_code_example(code: Code, text: str) -> Outcome:
+    return run_example(text, code.family, profile_of(code))
+
+
+def _language(code: Code, text: str) -> str:
+    example = parse(text, default_name(code.family))
+    kinds = {file.kind for file in example.files}
+    if example.commands or len(kinds) != 1:
+        return "text"
+    return {"eds": "ini", "xdd": "xml"}.get(kinds.pop() or "", "text")
+
+
 def _failing(code: Code) -> tuple[list[str], str | None]:
     """The example's lines and the fix safety its findings show; nothing for a code without one."""
     example = code.rule.example
     if not example:
         return [], None
-    if not FAMILIES[code.family].eds_examples:
-        return ["Example:", "", *_block(example, "text"), ""], None
-    text, findings = run(example)
-    mine = [f for f in findings if f.code == code.code]
-    lines = sorted({n for f in mine if (n := fragment_line(example, text, f.location.line)) is not None})
-    out = ["Example:", "", *_block(example), ""]
+    out = ["Example:", "", *_block(example, _language(code, example)), ""]
+    if parse(example).commands:
+        return out, None
+    outcome = run_code_example(code, example)
+    mine = [finding for finding, _ in outcome.findings if finding.code == code.code]
+    lines = sorted({n for n in outcome.lines(code.code) if n})
     if lines:
         out += [f"Reported at line {', '.join(map(str, lines))} of the example.", ""]
     elif mine:
@@ -65,7 +87,9 @@ def _body(code: Code) -> list[str]:
     failing, derived = _failing(code)
     out += failing
     if rule.fixed:
-        out += ["Fixed:", "", *_block(rule.fixed), ""]
+        out += ["Fixed:", "", *_block(rule.fixed, _language(code, rule.fixed)), ""]
+    # A check whose example's findings carry no fix has none; a code reported while reading, importing or
+    # generating says what can be done in its declaration.
     fix = rule.fix_safety or derived or ("No automatic fix." if rule.check is not None else "")
     if fix:
         out += [f"Fix: {fix}", ""]

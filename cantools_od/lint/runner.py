@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from ..model import Device, Severity
+from ..xdd.reader import refused
 from .codes import load as load_families
 from .config import Selection
 from .reader import reader_fix
@@ -27,7 +28,8 @@ def lint(device: Device, options: LintOptions | None = None, selection: Selectio
         for d in device.diagnostics
         if selection.enabled(d.code, file)
     ]
-    for rule in RULES.values():
+    # A file the reader refused (XDD001-XDD004) has no model: rules would report what is merely unread.
+    for rule in () if refused(device) else RULES.values():
         if rule.check is None or not selection.enabled(rule.code, file):
             continue
         if device.file_format != "eds" and rule.family in _EDS_TEXT_FAMILIES:

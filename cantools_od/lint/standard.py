@@ -17,8 +17,10 @@ from collections.abc import Callable, Iterator
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable, standard_type
 from ..model.cia301 import cia402, definitions
 from ..model.cia301.definitions import Definition, Entry, Mapping
+from ..model.cia301.objects import COMMUNICATION_AREA, DEVICE_TYPE
 from ..model.cia301.pdo import PDO_AREA
 from ..model.cia301.slots import as_int
+from . import examples as ex
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -33,7 +35,7 @@ def _type_name(data_type: int | None) -> str:
 
 def is_drive(device: Device) -> bool:
     """1000h names device profile 402 (the drive profile) in its low 16 bits."""
-    obj = device.objects.get(0x1000)
+    obj = device.objects.get(DEVICE_TYPE)
     value = as_int(device.resolve(obj.value())) if obj is not None else None
     return value is not None and cia402.device_profile(value) == cia402.PROFILE
 
@@ -44,9 +46,9 @@ def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
     for index, obj in device.objects.items():
         if obj.implicit or index in _PDO_RECORDS:
             continue
-        if 0x1000 <= index <= 0x1FFF:
+        if index in COMMUNICATION_AREA:
             found = definitions.definition(index)
-        elif drive and 0x6000 <= index <= 0x67FF:
+        elif drive and index in cia402.AREA:
             found = cia402.definition(index)
         else:
             continue
@@ -108,10 +110,10 @@ another layout of sub-indices than the one a master addresses: it reads sub-inde
 device has none, or misses the entries.
 
 Error: the object cannot be read the way the standard says. An ARRAY written where the standard
-has a RECORD (or the reverse) lays out the same entries: that is STD002.
-Fix: none; the object must be described again.
-Fixed: `[1018]` with `ObjectType=0x9` and sub-indices 0-4.""",
+has a RECORD (or the reverse) lays out the same entries: that is STD002.""",
     "[1018]\nParameterName=Identity\nObjectType=0x7\nDataType=0x0007\nAccessType=ro",
+    fixed=ex.identity(),
+    fix_safety="No automatic fix: the object must be described again.",
 )
 def object_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -135,10 +137,10 @@ types can still be the same, so a master reading the entries gets the right byte
 build their API from the object type (python-canopen's ODArray/ODRecord, CANopenNode's OD.h)
 offer another interface than for the standard object.
 
-Warning: nothing is read wrong; the description differs from the standard's.
-Fix: none offered (changing ObjectType changes generated code).
-Fixed: `ObjectType=0x9` for 1018h.""",
-    "[1018]\nParameterName=Identity\nObjectType=0x8\nDataType=0x0007\nSubNumber=5",
+Warning: nothing is read wrong; the description differs from the standard's.""",
+    ex.identity().replace("ObjectType=0x9", "ObjectType=0x8", 1),
+    fixed=ex.identity(),
+    fix_safety="No automatic fix (changing ObjectType changes generated code).",
 )
 def array_or_record(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -161,9 +163,9 @@ UNSIGNED16 makes tools that trust the file (python-canopen, lely, generated code
 encode other bytes than the device uses, and an SDO write of the declared size is refused.
 
 Error: the file and the standard give different bytes for the same entry.
-Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.
-Fixed: `[1000]` with `DataType=0x0007`.""",
+Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.""",
     "[1000]\nParameterName=Device type\nDataType=0x0004\nAccessType=ro",
+    fixed="[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro",
 )
 def data_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -202,12 +204,14 @@ const), 1024h is write-only, the heartbeat and COB-ID objects are rw or, where t
 them, ro/const. A master that follows the file writes where the device refuses, or does not write
 what the standard says it may (a consumer heartbeat time, an error history clear through 1003h sub 0).
 
-Warning: communication works, but configuration steps fail or are skipped.
-Fix: none offered (the device's behaviour decides which side is wrong).
-Fixed: `[1018sub1]` with `AccessType=ro`.""",
+Warning: communication works, but configuration steps fail or are skipped.""",
     "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
     "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
     "AccessType=rw",
+    fixed="[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"
+    "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
+    "AccessType=ro",
+    fix_safety="No automatic fix (the device's behaviour decides which side is wrong).",
 )
 def access_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -241,10 +245,10 @@ OS prompt 1026h may; 1000h, 1018h, the heartbeat, COB-ID and SDO objects may not
 `PDOMapping=1` against the standard invites a master to map it, and a standard device refuses that
 mapping (SDO abort 0604 0041h).
 
-Warning: nothing is read wrong; a configuration step can fail.
-Fix: none offered.
-Fixed: `PDOMapping=0`.""",
+Warning: nothing is read wrong; a configuration step can fail.""",
     "[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=1",
+    fixed="[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=0",
+    fix_safety="No automatic fix.",
 )
 def mapping(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):
@@ -267,10 +271,10 @@ Some standard entries allow only some values: 1018h sub-index 0 is 1-4, 1010h/10
 sub-index 0 at least 1, 1019h (SYNC counter overflow) 0 or 2-240, a mapping count 0-64. A device
 description with another default announces a device that a standard master cannot handle.
 
-Warning: the value is one the standard rules out; which side is wrong depends on the device.
-Fix: none offered.
-Fixed: `DefaultValue=4` for 1018h sub-index 0.""",
+Warning: the value is one the standard rules out; which side is wrong depends on the device.""",
     "[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=1",
+    fixed="[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=0",
+    fix_safety="No automatic fix.",
 )
 def value_range(ctx: Context) -> Iterator[Finding]:
     for obj, found in standard_objects(ctx.device):

@@ -62,6 +62,7 @@ CiA 306 limits every line to 255 characters; the length limits of the string key
     family="syntax",
     fixed="; A comment that stays short\n"
     + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    fix_safety="No automatic fix: shorten the line; a comment can go on several lines.",
 )
 
 
@@ -165,7 +166,8 @@ def long_names(ctx: Context) -> Iterator[Finding]:
 Every EDS and DCF has [FileInfo], [DeviceInfo] and [DummyUsage] (CiA 306 §4). Tools read the
 vendor and product identity, supported baud rates and PDO counts from [DeviceInfo]. The object
 lists are checked by EDS019.""",
-    "; no [DeviceInfo] section in the file\n[FileInfo]\nFileName=device.eds",
+    "; no [DeviceInfo]",
+    fixed="[DeviceInfo]\nVendorName=Example\nProductName=Example",
 )
 def missing_sections(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -318,9 +320,9 @@ two. cantools-od reads such a name as meant, but lely's dcfchk rejects it and py
 not find it: a DCF's NodeID and baud rate, or an object list's count, are silently lost there.
 
 Error: a peer reading the file by the standard loses the entry. Case alone is DIA018.
-Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.
-Fixed: `SupportedObjects=3`, `[DeviceComissioning]`.""",
+Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.""",
     "[MandatoryObjects]\nSupported Objects=3\n1=0x1000\n2=0x1001\n3=0x1018",
+    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
 )
 def unfound_spelling(ctx: Context) -> Iterator[Finding]:
     for spelling in spellings(ctx):

@@ -7,14 +7,34 @@ here so that `cantools-od rules CODE` explains them and `--select`/`--ignore` kn
 from __future__ import annotations
 
 from ..model import Severity
+from . import examples as ex
 from .rules import declare
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 _IMPORT = "docs/import-table.md describes the importer, its layouts and its overrides file."
 
 
-def _importer(code: str, severity: Severity, summary: str, why: str) -> None:
-    declare(code, severity, summary, f"{why.strip()}\n\n{_IMPORT}", family="import")
+_HEADER = "Index,Sub-index,Name,Data type,Access,Default value"
+_ROWS = "0x1000,,Device type,UNSIGNED32,ro,0\n0x1001,,Error register,UNSIGNED8,ro,0"
+_IMPORT_TABLE = "; $ cantools-od import-table table.csv -o device.eds"
+# Key/value blocks of a manual's text (TAB-separated), as a PDF-to-text tool extracts them.
+_MANUAL = (
+    "; whole file: manual.txt\nIndex\t1000h\nName\tDevice type\nObject code\tVAR\nData type\tUNSIGNED32\n"
+    "Access\tro\n\nIndex\t{index}\nName\tSpeed\nObject code\tVAR\nData type\tUNSIGNED16\nAccess\trw\n"
+    "; $ cantools-od import-table manual.txt -o device.eds"
+)
+
+
+def _table(rows: str, header: str = _HEADER, command: str = _IMPORT_TABLE) -> str:
+    """A rule example: a CSV table, then the import-table command line that reads it."""
+    return f"; whole file: table.csv\n{header}\n{rows}\n{command}"
+
+
+def _importer(
+    code: str, severity: Severity, summary: str, why: str, example: str = "", fixed: str = "", fix: str = ""
+) -> None:
+    declare(code, severity, summary, f"{why.strip()}\n\n{_IMPORT}", example, family="import", fixed=fixed,
+            fix_safety=f"No automatic fix: {fix}" if fix else "")  # fmt: skip
 
 
 _importer(
@@ -24,6 +44,9 @@ _importer(
     """
 The file is missing, unreadable or a damaged workbook (or openpyxl is not installed);
 import-table exits with 2.""",
+    "; $ cantools-od import-table manual.txt -o device.eds",
+    _table(_ROWS),
+    "name a file that exists and can be read.",
 )
 _importer(
     "IMP002",
@@ -32,6 +55,9 @@ _importer(
     """
 Nothing in the source looks like an object-dictionary table or block in any known layout; with
 no object from any source, import-table exits with 2.""",
+    "; whole file: manual.txt\nJust some text.\nNo tables here.\n; $ cantools-od import-table manual.txt -o device.eds",
+    _table(_ROWS),
+    "give the source holding the object table, or force its layout with --layout.",
 )
 _importer(
     "IMP003",
@@ -40,6 +66,14 @@ _importer(
     """
 The overrides file is not valid TOML, or names an unknown field, index or value; import-table
 exits with 2.""",
+    _table(_ROWS, command="; whole file: fixes.toml\n[objects\n" + _IMPORT_TABLE + " --overrides fixes.toml"),
+    _table(
+        _ROWS,
+        command='; whole file: fixes.toml\n[objects."0x1000"]\naccess = "ro"\n'
+        + _IMPORT_TABLE
+        + " --overrides fixes.toml",
+    ),
+    "correct the overrides file.",
 )
 _importer(
     "IMP004",
@@ -47,6 +81,10 @@ _importer(
     "CSV/TSV file malformed",
     """
 A delimited file could not be read as CSV or TSV from the reported line on.""",
+    "; $ python3 -c \"print('Index,Name\\n0x1000,Device type\\n0x2000,' + 'x' * 140000)\" > table.csv\n"
+    + _IMPORT_TABLE,
+    _table(_ROWS),
+    "export the table again; a cell holds at most 128 KiB.",
 )
 _importer(
     "IMP010",
@@ -55,13 +93,20 @@ _importer(
     """
 An access, data type, PDO-mapping flag or object code is spelled in a way the importer does not
 know; the value is left unknown.""",
+    _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0,maybe", _HEADER + ",PDO mapping"),
+    _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0,yes", _HEADER + ",PDO mapping"),
+    "spell the cell as CiA 301 does, or set the field in the overrides file.",
 )
 _importer(
     "IMP011",
     W,
     "Index not understood",
     """
-The row's index cell is not an object index; the row is skipped.""",
+The index of an object block in a manual's text is not an object index, so the block's entries
+cannot be placed and are skipped. (In a column table such a row is taken for a note.)""",
+    _MANUAL.format(index="20xxh"),
+    _MANUAL.format(index="2000h"),
+    "write the index as a hex number (`2000h`, `0x2000`).",
 )
 _importer(
     "IMP012",
@@ -69,6 +114,9 @@ _importer(
     "Sub-index not understood",
     """
 The row's sub-index cell is not a sub-index or a range of them; the row is skipped.""",
+    _table(_ROWS + "\n0x2000,x,Speed,UNSIGNED16,rw,0"),
+    _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0"),
+    "write the sub-index as a number.",
 )
 _importer(
     "IMP013",
@@ -77,6 +125,9 @@ _importer(
     """
 An index range (`1600h-17FFh`) whose concrete objects no source names: its rows are reported and
 dropped.""",
+    _table(_ROWS + "\n0x1600-0x17FF,1,Mapped object 1,UNSIGNED32,rw,0"),
+    _table(_ROWS + "\n0x1600,0,Number of mapped objects,UNSIGNED8,rw,0\n0x1600,1,Mapped object 1,UNSIGNED32,rw,0"),
+    "name the concrete objects the range stands for.",
 )
 _importer(
     "IMP020",
@@ -85,6 +136,13 @@ _importer(
     """
 Sources disagree about a value and no override decides: the policy took one; the import report
 shows both with their lines.""",
+    "; whole file: a.csv\nIndex,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro\n; whole file: b.csv\n"
+    "Index,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,rw\n"
+    "; $ cantools-od import-table a.csv b.csv -o device.eds --strict",
+    "; whole file: a.csv\nIndex,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro\n; whole file: b.csv\n"
+    "Index,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro\n"
+    "; $ cantools-od import-table a.csv b.csv -o device.eds --strict",
+    "decide in the overrides file which value holds.",
 )
 _importer(
     "IMP031",
@@ -93,6 +151,9 @@ _importer(
     """
 No source states the entry's data type or access type; the EDS key is left out and the EDS needs
 an override.""",
+    _table(_ROWS + "\n0x2000,,Speed,,rw,0"),
+    _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0"),
+    "give the data type and access in a source or the overrides file.",
 )
 _importer(
     "IMP032",
@@ -100,6 +161,12 @@ _importer(
     "Sub-index FFh not written",
     """
 Sub-index FFh holds an object's structure (CiA 301) and cannot be written to an EDS.""",
+    _table(
+        _ROWS + "\n0x2000,0,Highest sub-index supported,UNSIGNED8,ro,1\n0x2000,1,Gain,INTEGER16,rw,0\n"
+        "0x2000,255,Structure,UNSIGNED32,ro,0x0307"
+    ),
+    _table(_ROWS + "\n0x2000,0,Highest sub-index supported,UNSIGNED8,ro,1\n0x2000,1,Gain,INTEGER16,rw,0"),
+    "the EDS describes the structure through ObjectType and the sub-objects.",
 )
 _importer(
     "IMP040",
@@ -108,6 +175,19 @@ _importer(
     """
 An override names an index, sub-index or field that no source imported; it is probably
 misspelled.""",
+    _table(
+        _ROWS,
+        command='; whole file: fixes.toml\n[objects."0x2000"]\naccess = "ro"\n'
+        + _IMPORT_TABLE
+        + " --overrides fixes.toml",
+    ),
+    _table(
+        _ROWS,
+        command='; whole file: fixes.toml\n[objects."0x1000"]\naccess = "ro"\n'
+        + _IMPORT_TABLE
+        + " --overrides fixes.toml",
+    ),
+    "correct the override's index, sub-index or field.",
 )
 _importer(
     "IMP050",
@@ -115,6 +195,9 @@ _importer(
     "Value does not fit its type",
     """
 A default or limit is outside its data type's range; it is left out of the EDS.""",
+    _table(_ROWS + "\n0x2000,,Speed,UNSIGNED8,rw,300"),
+    _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,300"),
+    "correct the value or the data type, in a source or the overrides file.",
 )
 _importer(
     "IMP051",
@@ -123,6 +206,9 @@ _importer(
     """
 An absolute default COB-ID of the pre-defined connection set (CiA 301), printed for node 1 or
 127, is written node-relative.""",
+    _table(_ROWS + "\n0x1014,,COB-ID EMCY,UNSIGNED32,rw,0x81"),
+    _table(_ROWS + "\n0x1014,,COB-ID EMCY,UNSIGNED32,rw,$NODEID+0x80"),
+    "the importer writes it so itself; write it node-relative in the source to silence it.",
 )
 
 declare(
@@ -134,7 +220,13 @@ Generated PDO code packs and unpacks each mapped entry at its bit offset, so gen
 cannot lay out: a mapped object that does not exist or has no fixed-size type, an entry length
 that differs from the type's size, a mapping count above 64, or more bits than the frame holds
 (64, or 512 with --can-fd). Nothing is written; lint explains each case (PDO040-PDO046).""",
+    "; file: drive.eds\n" + ex.pdo("tx", "0x60410010") + "; $ cantools-od gen drive.eds -t c -o out",
     family="gen",
+    fixed="; file: drive.eds\n"
+    + ex.pdo("tx", "0x60410010")
+    + ex.STATUSWORD
+    + "; $ cantools-od gen drive.eds -t c -o out",
+    fix_safety="No automatic fix: `--keep-going` leaves the PDO out of the generated code instead.",
 )
 declare(
     "LNT001",
@@ -144,4 +236,5 @@ declare(
 A rule raised an exception on this file. The other rules still ran; the failing rule's findings
 are missing. Please report it with the file.""",
     family="lint",
+    fix_safety="No automatic fix: report the failure with the file; meanwhile `--ignore` the rule's code.",
 )

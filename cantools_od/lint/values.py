@@ -11,6 +11,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from ..model import DataType, Location, NodeIdExpr, Object, ObjectKind, Severity, TimeValue, Value, ValueKind, Variable
+from ..model.datatypes import TIME_OF_DAY
 from . import examples as ex
 from .rules import Context, Finding, rule
 
@@ -124,7 +125,7 @@ def type_range(ctx: Context) -> Iterator[Finding]:
 
 def _range_problem(dtype: DataType, value: Value, nids: tuple[int, ...]) -> str | None:
     if isinstance(value, TimeValue) and dtype.kind is ValueKind.TIME:
-        ms_limit = _TIME_OF_DAY_MS if dtype.index == 0x000C else 1 << 28
+        ms_limit = _TIME_OF_DAY_MS if dtype.index == TIME_OF_DAY.index else 1 << 28
         if not (0 <= value.days <= 0xFFFF and 0 <= value.ms < ms_limit):
             return f"{value.days} days {value.ms} ms is outside {dtype.name}"
         return None

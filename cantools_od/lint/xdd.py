@@ -7,6 +7,11 @@ from .rules import declare
 
 E, W = Severity.ERROR, Severity.WARNING
 _FAMILY = "xdd"
+# The object of the examples: a framed XDD holds it besides the mandatory objects.
+_SETTING = (
+    '<CANopenObject index="2000" name="Setting" objectType="7" dataType="0007" accessType="rw" defaultValue="0" '
+    'PDOmapping="no"'
+)
 
 declare(
     "XDD001",
@@ -14,9 +19,10 @@ declare(
     "Not well-formed XML",
     """
 The file breaks the XML syntax (an unclosed tag, a stray `&`, bytes that are not in its encoding), so no
-tool can read it as a CiA 311 device description. Nothing after the error is read. Not fixable
-automatically.""",
-    '<CANopenObject index="1000" name="Device type">\n</ISO15745ProfileContainer>',
+tool can read it as a CiA 311 device description. Nothing after the error is read.""",
+    _SETTING + ">\n</CANopenObjectList>",
+    fixed=_SETTING + "/>",
+    fix_safety="No automatic fix: only the author knows what the broken markup meant.",
     family=_FAMILY,
 )
 declare(
@@ -26,8 +32,11 @@ declare(
     """
 CiA 311 files need no DTD entities. An entity declaration can expand to gigabytes ("billion laughs"),
 and an external entity can make a reader disclose local files (XXE); both are refused, and the file is
-not read. Remove the DOCTYPE. Not fixable automatically.""",
-    '<!DOCTYPE x [<!ENTITY e SYSTEM "file:///etc/passwd">]>\n<ISO15745ProfileContainer>&e;</ISO15745ProfileContainer>',
+not read. Remove the DOCTYPE.""",
+    '; whole file: device.xdd\n<?xml version="1.0"?>\n<!DOCTYPE x [<!ENTITY e SYSTEM "file:///etc/passwd">]>\n'
+    '<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1">&e;</ISO15745ProfileContainer>',
+    fixed="; file: device.xdd\n" + _SETTING + "/>",
+    fix_safety="No automatic fix: the file is not read, so nothing is written back.",
     family=_FAMILY,
 )
 declare(
@@ -37,7 +46,9 @@ declare(
     """
 Device descriptions are at most a few megabytes. A file larger than 32 MiB, with more than 500 000
 elements or nested deeper than 64 levels is refused unread, so hostile input costs bounded time and
-memory. Not fixable automatically.""",
+memory.""",
+    "; $ python3 -c \"print('<a>' * 65 + '</a>' * 65)\" > deep.xdd\n; $ cantools-od lint deep.xdd",
+    fix_safety="No automatic fix: the file is not read.",
     family=_FAMILY,
 )
 declare(
@@ -47,7 +58,10 @@ declare(
     """
 The root element of an XDD/XDC is `ISO15745ProfileContainer` (CiA 311, after ISO 15745). Another root
 means the file is some other XML; it is read as far as its elements match.""",
-    '<DeviceDescription>...</DeviceDescription>\n\nfixed:\n<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1">',
+    '; whole file: device.xdd\n<?xml version="1.0"?>\n<DeviceDescription xmlns="http://www.canopen.org/xml/1.1">\n'
+    "</DeviceDescription>",
+    fixed="; file: device.xdd\n" + _SETTING + "/>",
+    fix_safety="No automatic fix: the file is not read as a CiA 311 document.",
     family=_FAMILY,
 )
 declare(
@@ -58,7 +72,9 @@ declare(
 CiA 311 elements live in the namespace `http://www.canopen.org/xml/1.1` (or `.../1.0`). Without it,
 schema-validating tools (CANopenEditor's serializer among them) find no CiA 311 element at all. This reader
 matches elements by local name either way.""",
-    '<ISO15745ProfileContainer>\n\nfixed:\n<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1">',
+    '<ISO15745ProfileContainer xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
+    fixed='<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
+    fix_safety='No automatic fix: add `xmlns="http://www.canopen.org/xml/1.1"` to the root element.',
     family=_FAMILY,
 )
 declare(
@@ -69,8 +85,9 @@ declare(
 `CANopenObject` needs `index` and `name`, `CANopenSubObject` needs `subIndex` and `name` (CiA 311). An
 object or sub-object without its index cannot be placed and is left out; one without a name is kept
 unnamed.""",
-    '<CANopenObject name="Device type" objectType="7"/>\n\n'
-    'fixed:\n<CANopenObject index="1000" name="Device type" objectType="7"/>',
+    _SETTING.replace(' index="2000"', "") + "/>",
+    fixed=_SETTING + "/>",
+    fix_safety="No automatic fix: only the author knows the index or name meant.",
     family=_FAMILY,
 )
 declare(
@@ -81,8 +98,9 @@ declare(
 A value is outside what CiA 311 allows for it: an index that is not hex, an `objectType` or `accessType`
 that CiA 301 does not define, a `PDOmapping` other than no/default/optional/TPDO/RPDO, a CANopenNode
 property with a value the stack does not know. The text is kept as it is.""",
-    '<CANopenObject index="1000" name="Device type" objectType="7" accessType="read"/>\n\n'
-    'fixed:\n<CANopenObject index="1000" name="Device type" objectType="7" accessType="ro"/>',
+    _SETTING.replace("rw", "read") + "/>",
+    fixed=_SETTING + "/>",
+    fix_safety="No automatic fix: the text is kept as written.",
     family=_FAMILY,
 )
 declare(
@@ -92,7 +110,9 @@ declare(
     """
 An object index, a sub-index within its object, or a parameter `uniqueID` appears twice. Tools disagree
 on which copy counts; this reader keeps the first and ignores the later one.""",
-    '<CANopenObject index="2000" name="A"/>\n<CANopenObject index="2000" name="B"/>',
+    _SETTING + "/>\n" + _SETTING.replace("Setting", "Other setting") + "/>",
+    fixed=_SETTING + "/>\n" + _SETTING.replace("2000", "2001").replace("Setting", "Other setting") + "/>",
+    fix_safety="No automatic fix: which copy is meant is the author's decision.",
     family=_FAMILY,
 )
 declare(
@@ -102,7 +122,9 @@ declare(
     """
 A `CANopenObject`/`CANopenSubObject` refers by `uniqueIDRef` to a `parameter` of the ApplicationProcess
 that does not exist, so the entry's data type, access and default value stated there are missing.""",
-    '<CANopenObject index="2000" name="A" objectType="7" uniqueIDRef="UID_OBJ_2000"/>  (no such parameter)',
+    _SETTING + ' uniqueIDRef="UID_OBJ_2000"/>',
+    fixed=_SETTING + "/>",
+    fix_safety="No automatic fix: add the parameter, or state the attributes on the object itself.",
     family=_FAMILY,
 )
 declare(
@@ -112,7 +134,9 @@ declare(
     """
 An element that CiA 311 does not define where it stands. It is kept (and written back) but has no
 meaning for any tool; check its spelling.""",
-    '<CANopenObject index="2000" name="A"><comment>x</comment></CANopenObject>',
+    _SETTING + "><comment>speed set-point</comment></CANopenObject>",
+    fixed=_SETTING + "/>",
+    fix_safety="No automatic fix: the element is kept as written.",
     family=_FAMILY,
 )
 declare(
@@ -122,7 +146,8 @@ declare(
     """
 An attribute of `CANopenObject`/`CANopenSubObject` that CiA 311 does not define. It is kept (and written
 back) but has no meaning for any tool; check its spelling (attribute names are case-sensitive).""",
-    '<CANopenObject index="2000" name="A" AccessType="rw"/>\n\n'
-    'fixed:\n<CANopenObject index="2000" name="A" accessType="rw"/>',
+    _SETTING + ' lowlimit="0"/>',
+    fixed=_SETTING + ' lowLimit="0"/>',
+    fix_safety="No automatic fix: the attribute is kept as written.",
     family=_FAMILY,
 )

@@ -12,6 +12,44 @@ from enum import StrEnum
 
 from pydantic import BaseModel, ConfigDict
 
+# cia301.objects imports nothing: this module, which model/__init__ loads first, may use it without a cycle.
+from .cia301.objects import (
+    COB_ID_EMCY,
+    COB_ID_SYNC,
+    COB_ID_TIME,
+    COMM_BASE,
+    COMM_CYCLE_PERIOD,
+    COMMUNICATION_AREA,
+    CONSUMER_HEARTBEAT,
+    DEVICE_TYPE,
+    ERROR_HISTORY,
+    ERROR_REGISTER,
+    FIRST_SDO_SERVER,
+    GLOBAL_FAILSAFE_COMMAND,
+    GUARD_TIME,
+    HIGH_RESOLUTION_TIME_STAMP,
+    INHIBIT_TIME_EMCY,
+    LIFE_TIME_FACTOR,
+    MANUFACTURER_STATUS,
+    MAP_BASE,
+    PDO_SPAN,
+    PRODUCER_HEARTBEAT,
+    RESTORE_DEFAULTS,
+    RPDO_COMM,
+    RX,
+    SDO_CLIENTS,
+    SDO_SERVERS,
+    SRDO_COMM,
+    SRDO_CONFIGURATION_VALID,
+    SRDO_CRC,
+    SRDO_MAP_OFFSET,
+    STORE_PARAMETERS,
+    SYNC_COUNTER_OVERFLOW,
+    SYNC_WINDOW_LENGTH,
+    TPDO_COMM,
+    TX,
+)
+
 
 class SrdoAccess(StrEnum):
     """CO_accessSRDO: whether an entry may be mapped into an SRDO, and which way."""
@@ -47,28 +85,35 @@ class CanopenNodeInfo(BaseModel):
         return all(value is None for value in self.__dict__.values())
 
 
+def _one(index: int) -> range:
+    return range(index, index + 1)
+
+
 # The OD_CNT_<label> macros the stack counts, by the index ranges of CiA 301/304 that hold their objects
 # (CANopen.c checks them with #error and sizes its object arrays from them).
-_COUNT_RANGES: tuple[tuple[int, int, str], ...] = (
-    (0x1000, 0x1000, "NMT"),
-    (0x1001, 0x1001, "EM"),
-    (0x1005, 0x1005, "SYNC"),
-    (0x1006, 0x1006, "SYNC_PROD"),
-    (0x1010, 0x1010, "STORAGE"),
-    (0x1012, 0x1012, "TIME"),
-    (0x1014, 0x1014, "EM_PROD"),
-    (0x1016, 0x1016, "HB_CONS"),
-    (0x1017, 0x1017, "HB_PROD"),
-    (0x1200, 0x127F, "SDO_SRV"),
-    (0x1280, 0x12FF, "SDO_CLI"),
-    (0x1300, 0x1300, "GFC"),
-    (0x1301, 0x1340, "SRDO"),
-    (0x1400, 0x15FF, "RPDO"),
-    (0x1800, 0x19FF, "TPDO"),
+_COUNT_RANGES: tuple[tuple[range, str], ...] = (
+    (_one(DEVICE_TYPE), "NMT"),
+    (_one(ERROR_REGISTER), "EM"),
+    (_one(COB_ID_SYNC), "SYNC"),
+    (_one(COMM_CYCLE_PERIOD), "SYNC_PROD"),
+    (_one(STORE_PARAMETERS), "STORAGE"),
+    (_one(COB_ID_TIME), "TIME"),
+    (_one(COB_ID_EMCY), "EM_PROD"),
+    (_one(CONSUMER_HEARTBEAT), "HB_CONS"),
+    (_one(PRODUCER_HEARTBEAT), "HB_PROD"),
+    (SDO_SERVERS, "SDO_SRV"),
+    (SDO_CLIENTS, "SDO_CLI"),
+    (_one(GLOBAL_FAILSAFE_COMMAND), "GFC"),
+    (SRDO_COMM, "SRDO"),
+    (RPDO_COMM, "RPDO"),
+    (TPDO_COMM, "TPDO"),
 )
 
 # Communication-area objects whose values are states or commands, not configuration: kept in RAM.
-_RAM_IN_COMM_AREA = frozenset({0x1001, 0x1002, 0x1003, 0x1010, 0x1011, 0x1013, 0x1200})
+_RAM_IN_COMM_AREA = frozenset(
+    {ERROR_REGISTER, MANUFACTURER_STATUS, ERROR_HISTORY, STORE_PARAMETERS, RESTORE_DEFAULTS,
+     HIGH_RESOLUTION_TIME_STAMP, FIRST_SDO_SERVER}
+)  # fmt: skip
 
 RAM = "RAM"
 PERSIST_COMM = "PERSIST_COMM"
@@ -76,15 +121,15 @@ PERSIST_COMM = "PERSIST_COMM"
 
 def standard_count_label(index: int) -> str | None:
     """The count label the stack expects on the object at `index`, or None when it counts no object there."""
-    for low, high, label in _COUNT_RANGES:
-        if low <= index <= high:
+    for area, label in _COUNT_RANGES:
+        if index in area:
             return label
     return None
 
 
 def standard_storage_group(index: int) -> str:
     """The storage group for an object with none stated: communication parameters persist, the rest is RAM."""
-    if 0x1000 <= index <= 0x1FFF and index not in _RAM_IN_COMM_AREA:
+    if index in COMMUNICATION_AREA and index not in _RAM_IN_COMM_AREA:
         return PERSIST_COMM
     return RAM
 
@@ -96,7 +141,8 @@ def count_label_for(index: int, info: CanopenNodeInfo | None) -> str | None:
     return standard_count_label(index)
 
 
-# Limits CANopen.c checks with #error (or that its init loops rely on): label → (least, most).
+# Limits CANopen.c checks with #error (or that its init loops rely on): label → (least, most). The
+# stack allows as many SDOs, PDOs and SRDOs as their index ranges hold.
 COUNT_LIMITS: dict[str, tuple[int, int]] = {
     "NMT": (1, 1),
     "EM": (1, 1),
@@ -108,31 +154,52 @@ COUNT_LIMITS: dict[str, tuple[int, int]] = {
     "TIME": (0, 1),
     "GFC": (0, 1),
     "STORAGE": (0, 1),
-    "SDO_SRV": (1, 128),
-    "SDO_CLI": (0, 128),
-    "RPDO": (0, 512),
-    "TPDO": (0, 512),
-    "SRDO": (0, 64),
+    "SDO_SRV": (1, len(SDO_SERVERS)),
+    "SDO_CLI": (0, len(SDO_CLIENTS)),
+    "RPDO": (0, PDO_SPAN),
+    "TPDO": (0, PDO_SPAN),
+    "SRDO": (0, len(SRDO_COMM)),
 }
+
+# Counts CANopen.c needs, each with the object that usually carries it (CO_CANopenInit uses them).
+REQUIRED_COUNTS: tuple[tuple[str, int], ...] = (
+    ("NMT", DEVICE_TYPE), ("EM", ERROR_REGISTER), ("EM_PROD", COB_ID_EMCY), ("HB_CONS", CONSUMER_HEARTBEAT),
+    ("HB_PROD", PRODUCER_HEARTBEAT),
+)  # fmt: skip
+# Objects the stack uses beside a counted one: label → the indices it then reads too.
+COMPANIONS: tuple[tuple[str, tuple[int, ...]], ...] = (
+    ("EM", (ERROR_HISTORY,)), ("SYNC", (COMM_CYCLE_PERIOD,)), ("SRDO", (SRDO_CONFIGURATION_VALID, SRDO_CRC)),
+)  # fmt: skip
 
 # Objects the stack's init walks by position from the first one: label → (first index, partner offset).
 # RPDO i uses 1400h+i and 1600h+i, TPDO i 1800h+i and 1A00h+i, SRDO i 1301h+i and 1381h+i.
 CONSECUTIVE: dict[str, tuple[int, int | None]] = {
-    "SDO_SRV": (0x1200, None),
-    "SDO_CLI": (0x1280, None),
-    "RPDO": (0x1400, 0x200),
-    "TPDO": (0x1800, 0x200),
-    "SRDO": (0x1301, 0x80),
+    "SDO_SRV": (SDO_SERVERS[0], None),
+    "SDO_CLI": (SDO_CLIENTS[0], None),
+    "RPDO": (COMM_BASE[RX], MAP_BASE[RX] - COMM_BASE[RX]),
+    "TPDO": (COMM_BASE[TX], MAP_BASE[TX] - COMM_BASE[TX]),
+    "SRDO": (SRDO_COMM[0], SRDO_MAP_OFFSET),
 }
 
 # COB-IDs to which the stack adds the node-ID itself: only there is `$NODEID+n` stored as n harmlessly.
-NODEID_AREAS: tuple[tuple[int, int], ...] = ((0x1014, 0x1014), (0x1200, 0x12FF), (0x1400, 0x15FF), (0x1800, 0x19FF))
+_NODEID_AREAS = (_one(COB_ID_EMCY), range(SDO_SERVERS[0], SDO_CLIENTS[-1] + 1), RPDO_COMM, TPDO_COMM)
+NODEID_AREAS: tuple[tuple[int, int], ...] = tuple((area[0], area[-1]) for area in _NODEID_AREAS)
 
 # Communication objects the stack extends with its own read/write functions (EM history, storage):
 # like CANopenEditor, an entry of theirs without a default gets no memory.
-_STACK_EXTENDED = frozenset({0x1003, 0x1010, 0x1011})
+_STACK_EXTENDED = frozenset({ERROR_HISTORY, STORE_PARAMETERS, RESTORE_DEFAULTS})
+
+# The entries CO_config_t points at (NAME_INIT_CONFIG), in the order of its members: the stack looks them up.
+CONFIG_ENTRIES = (
+    PRODUCER_HEARTBEAT, CONSUMER_HEARTBEAT, GUARD_TIME, LIFE_TIME_FACTOR, ERROR_REGISTER, COB_ID_EMCY,
+    INHIBIT_TIME_EMCY, ERROR_HISTORY, SDO_SERVERS[0], SDO_CLIENTS[0], COB_ID_TIME, COB_ID_SYNC, COMM_CYCLE_PERIOD,
+    SYNC_WINDOW_LENGTH, SYNC_COUNTER_OVERFLOW, COMM_BASE[RX], MAP_BASE[RX], COMM_BASE[TX], MAP_BASE[TX],
+    GLOBAL_FAILSAFE_COMMAND, SRDO_COMM[0], SRDO_COMM[0] + SRDO_MAP_OFFSET, SRDO_CONFIGURATION_VALID, SRDO_CRC,
+)  # fmt: skip
+# The arrays whose element count CO_config_t carries (CNT_ARR_1016, CNT_ARR_1003).
+CONFIG_ARRAYS = (CONSUMER_HEARTBEAT, ERROR_HISTORY)
 
 
 def stack_reads_at_init(index: int) -> bool:
     """Whether CO_CANopenInit reads the object's value from the OD: it then needs memory even without a default."""
-    return 0x1000 <= index <= 0x1FFF and index not in _STACK_EXTENDED
+    return index in COMMUNICATION_AREA and index not in _STACK_EXTENDED

@@ -88,9 +88,15 @@ STANDARD_TYPES: dict[int, DataType] = {
 }
 
 BASIC_TYPE_RANGE = range(0x0001, 0x001C)
-DOMAIN = STANDARD_TYPES[0x000F]
+STATIC_TYPE_AREA = range(0x0001, 0x0020)  # 0001h-001Fh: the static types; the indices not assigned are reserved
+INDEX_BY_NAME = {dtype.name: dtype.index for dtype in STANDARD_TYPES.values()}
+BOOLEAN = STANDARD_TYPES[0x0001]
 UNSIGNED8 = STANDARD_TYPES[0x0005]
 UNSIGNED32 = STANDARD_TYPES[0x0007]
+REAL32 = STANDARD_TYPES[0x0008]
+OCTET_STRING = STANDARD_TYPES[0x000A]
+TIME_OF_DAY = STANDARD_TYPES[0x000C]
+DOMAIN = STANDARD_TYPES[0x000F]
 
 
 def standard_type(index: int | None) -> DataType | None:

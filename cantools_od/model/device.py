@@ -8,6 +8,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr
 
+from .cia301.objects import DATA_TYPE_AREA
 from .datatypes import DOMAIN, DataType, standard_type
 from .objects import Object, ObjectKind, Section, Variable
 from .source import Diagnostic
@@ -179,7 +180,7 @@ class Device(BaseModel):
         if var.data_type is None:
             return DOMAIN if var is owner and owner.kind is ObjectKind.DOMAIN else None
         dtype = standard_type(var.data_type)
-        if dtype is None and var.data_type < 0x1000:
+        if dtype is None and var.data_type < DATA_TYPE_AREA.stop:
             alias = self.objects.get(var.data_type)
             if alias is not None and alias.kind is ObjectKind.DEFTYPE:
                 dtype = standard_type(alias.data_type)

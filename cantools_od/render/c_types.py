@@ -16,8 +16,7 @@ from dataclasses import dataclass
 
 from ..eds.values import format_real
 from ..model import DataType, NodeIdExpr, ValueKind
-
-DOMAIN_TYPE = 0x000F
+from ..model.datatypes import DOMAIN
 
 
 @dataclass(frozen=True)
@@ -81,7 +80,7 @@ def storage(dtype: DataType | None, default: object) -> Storage | None:
     if dtype.kind is ValueKind.STRING:
         size = len(default.encode("utf-8")) if isinstance(default, str) else 0
         return Storage("char", (max(size, 1),), 8 * size, size)
-    if dtype.kind is ValueKind.OCTETS and dtype.index != DOMAIN_TYPE:
+    if dtype.kind is ValueKind.OCTETS and dtype.index != DOMAIN.index:
         size = len(default) if isinstance(default, bytes) else 0
         return Storage("uint8_t", (max(size, 1),), 8 * size, size)
     if dtype.kind is ValueKind.UNICODE:

@@ -15,6 +15,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
 from ..model import ValueKind
+from ..model.canopennode import CONFIG_ARRAYS, CONFIG_ENTRIES
 from ..views.canopennode import ARR, REC, VAR, NodeEntry, NodeObject, NodeView
 from ..views.codegen import DeviceView
 from . import stream_template, whole
@@ -25,10 +26,6 @@ Described = tuple[tuple["Stored", ...], tuple[Fields, ...]]
 # CO_config_t members filled by NAME_INIT_CONFIG: count labels and the entries the stack looks up.
 CONFIG_COUNTS = ("NMT", "HB_CONS", "EM", "SDO_SRV", "SDO_CLI", "TIME", "SYNC", "RPDO", "TPDO", "LEDS",
                  "GFC", "SRDO", "LSS_SLV", "LSS_MST", "GTWA", "TRACE")  # fmt: skip
-CONFIG_ENTRIES = (0x1017, 0x1016, 0x100C, 0x100D, 0x1001, 0x1014, 0x1015, 0x1003, 0x1200, 0x1280, 0x1012,
-                  0x1005, 0x1006, 0x1007, 0x1019, 0x1400, 0x1600, 0x1800, 0x1A00, 0x1300, 0x1301, 0x1381,
-                  0x13FE, 0x13FF)  # fmt: skip
-CONFIG_ARRAYS = (0x1016, 0x1003)
 _INTEGER_TYPES = {1: "int8_t", 2: "int16_t", 4: "int32_t", 8: "int64_t"}
 _ODT = {VAR: ("ODT_VAR", "OD_obj_var_t"), ARR: ("ODT_ARR", "OD_obj_array_t"), REC: ("ODT_REC", "OD_obj_record_t")}
 

@@ -8,13 +8,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..model import NodeIdExpr, standard_type
+from ..model import NodeIdExpr
+from ..model.datatypes import UNSIGNED32
 from ..views.codegen import DeviceView, PdoView
 from .rust_layout import struct_body
 from .rust_names import camel, unique_fields
 from .rust_types import int_literal, node_expr, rust_type
-
-_UNSIGNED32 = standard_type(0x0007)
 
 
 @dataclass(frozen=True)
@@ -83,7 +82,7 @@ def _pdo(view: DeviceView, pdo: PdoView, node_id: int | None) -> RustPdo:
     raw = cob.default if cob is not None else pdo.pdo.cob_id
     node = node_expr("u32", raw.offset) if isinstance(raw, NodeIdExpr) else None
     value = raw.resolve(node_id) if isinstance(raw, NodeIdExpr) and node_id is not None else raw
-    literal = int_literal(value, _UNSIGNED32) if isinstance(value, int) and _UNSIGNED32 is not None else None
+    literal = int_literal(value, UNSIGNED32) if isinstance(value, int) else None
     transmission = pdo.pdo.transmission_type
     return RustPdo(
         view=pdo,

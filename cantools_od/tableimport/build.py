@@ -38,6 +38,7 @@ from ..model.cia301.objects import (
     SDO_SERVERS,
 )
 from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
+from ..model.datatypes import DOMAIN
 from .entries import loc
 from .facts import Norm, Source
 from .merge import Candidate, MergedEntry, MergedObject, MergeResult, Resolved, display
@@ -179,7 +180,7 @@ def _object(obj: MergedObject, info: BuildInfo, problems: list[Diagnostic]) -> O
     if info.comments:
         result.comments = _comments(fields, entry, obj)
     if obj.kind is ObjectKind.DOMAIN:
-        result.data_type = 0x000F if result.data_type is None or result.data_type != 0x0F else result.data_type
+        result.data_type = DOMAIN.index
         result.default = None
         result.pdo_mapping = None
     return result

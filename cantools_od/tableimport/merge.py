@@ -24,6 +24,7 @@ from typing import Literal
 from ..model import AccessType, NodeIdExpr, ObjectKind, standard_type
 from ..model.cia301.objects import DATA_TYPE_AREA
 from ..model.cia301.pdo import COMM_BASE, MAP_BASE, PDO_SPAN
+from ..model.datatypes import UNSIGNED8
 from .cia import STANDARD_OBJECTS, StdEntry, record_layout
 from .entries import Kind
 from .facts import LATE_FIELDS, Fact, Norm, Source
@@ -417,7 +418,7 @@ def _one_value(sub0: list[Fact]) -> bool:
     """Sub-index 0 alone, named like a value (`Password`) rather than a count, and not UNSIGNED8."""
     names = [str(f.value) for f in sub0 if f.field == "name"]
     types = {f.value for f in sub0 if f.field == "data_type"}
-    return bool(names) and not any(_COUNT_NAME.search(n) for n in names) and types != {0x05}
+    return bool(names) and not any(_COUNT_NAME.search(n) for n in names) and types != {UNSIGNED8.index}
 
 
 PDO_FAMILIES = tuple((base, base + PDO_SPAN - 1) for bases in (COMM_BASE, MAP_BASE) for base in bases.values())
@@ -575,7 +576,7 @@ def _type_facts(
     if std_entry is not None and std_entry.data_type is not None:
         type_facts.append(_inferred_fact(index, sub, "data_type", std_entry.data_type))
     elif container and sub == 0:
-        type_facts.append(_inferred_fact(index, sub, "data_type", 0x05))
+        type_facts.append(_inferred_fact(index, sub, "data_type", UNSIGNED8.index))
     return type_facts
 
 

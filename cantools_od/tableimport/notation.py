@@ -12,6 +12,8 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from ..model import AccessType, DataType, NodeIdExpr, ObjectKind, standard_type
+from ..model.cia301 import cia402
+from ..model.datatypes import INDEX_BY_NAME
 
 # --------------------------------------------------------------------------- text clean-up
 
@@ -269,34 +271,34 @@ def parse_access(raw: str) -> AccessSpec | None:
 
 # --------------------------------------------------------------------------- data types
 
+# Vendor spellings of CiA 301 type names (and of the record types), by the name datatypes gives the type.
 _TYPE_ALIASES = {
-    "BOOLEAN": 0x01,
-    "BOOL": 0x01,
-    "REAL32": 0x08,
-    "FLOAT": 0x08,
-    "FLOATINGPOINT": 0x08,
-    "FLOATINGPOINT(FLOAT)": 0x08,
-    "REAL64": 0x11,
-    "VISIBLESTRING": 0x09,
-    "STRING": 0x09,
-    "OCTETSTRING": 0x0A,
-    "STRINGOCTET": 0x0A,
-    "UNICODESTRING": 0x0B,
-    "TIMEOFDAY": 0x0C,
-    "TIMEDIFFERENCE": 0x0D,
-    "DOMAIN": 0x0F,
-    "BYTE": 0x05,
-    "PDOCOMMPAR": 0x20,
-    "PDOCOMMUNICATIONPARAMETER": 0x20,
-    "PDOMAPPING": 0x21,
-    "PDOMAPPINGPARAMETER": 0x21,
-    "SDOPARAMETER": 0x22,
-    "IDENTITY": 0x23,
+    alias: INDEX_BY_NAME[name]
+    for alias, name in {
+        "BOOLEAN": "BOOLEAN",
+        "BOOL": "BOOLEAN",
+        "REAL32": "REAL32",
+        "FLOAT": "REAL32",
+        "FLOATINGPOINT": "REAL32",
+        "FLOATINGPOINT(FLOAT)": "REAL32",
+        "REAL64": "REAL64",
+        "VISIBLESTRING": "VISIBLE_STRING",
+        "STRING": "VISIBLE_STRING",
+        "OCTETSTRING": "OCTET_STRING",
+        "STRINGOCTET": "OCTET_STRING",
+        "UNICODESTRING": "UNICODE_STRING",
+        "TIMEOFDAY": "TIME_OF_DAY",
+        "TIMEDIFFERENCE": "TIME_DIFFERENCE",
+        "DOMAIN": "DOMAIN",
+        "BYTE": "UNSIGNED8",
+        "PDOCOMMPAR": "PDO_COMMUNICATION_PARAMETER",
+        "PDOCOMMUNICATIONPARAMETER": "PDO_COMMUNICATION_PARAMETER",
+        "PDOMAPPING": "PDO_MAPPING",
+        "PDOMAPPINGPARAMETER": "PDO_MAPPING",
+        "SDOPARAMETER": "SDO_PARAMETER",
+        "IDENTITY": "IDENTITY",
+    }.items()
 }
-_INT_FAMILY = {"UNSIGNED": (0x05, 0x06, 0x07, 0x16, 0x1B), "INTEGER": (0x02, 0x03, 0x04, 0x10, 0x15)}
-_WIDTHS = {8: 0, 16: 1, 32: 2, 24: 3, 64: 4}
-_OTHER_WIDTHS = {("INTEGER", 40): 0x12, ("INTEGER", 48): 0x13, ("INTEGER", 56): 0x14}
-_OTHER_WIDTHS.update({("UNSIGNED", 40): 0x18, ("UNSIGNED", 48): 0x19, ("UNSIGNED", 56): 0x1A})
 
 
 @dataclass(frozen=True)
@@ -325,19 +327,16 @@ def parse_type(raw: str) -> TypeSpec | None:
     if key in _TYPE_ALIASES:
         return TypeSpec(_TYPE_ALIASES[key])
     if key.startswith("INTERPOLATIONTIMEPERIOD"):
-        return TypeSpec(0x80)
+        return TypeSpec(cia402.INTERPOLATION_TIME_PERIOD_TYPE)
     if key.startswith("INTERPOLATIONDATACONFIGURATION"):
-        return TypeSpec(0x81)
+        return TypeSpec(cia402.INTERPOLATION_DATA_CONFIGURATION_TYPE)
     match = re.fullmatch(r"(UNSIGNED|INSIGNED|USIGN|UINT|U|INTEGER|SIGNEDT?|SINT|INT|I|S)(\d{1,2})", key)
     if match:
         family = "UNSIGNED" if match.group(1) in ("UNSIGNED", "USIGN", "UINT", "U") else "INTEGER"
         bits = int(match.group(2))
         note = "typo 'Insigned'" if match.group(1) == "INSIGNED" else ""
-        if bits in _WIDTHS:
-            return TypeSpec(_INT_FAMILY[family][_WIDTHS[bits]], note=note)
-        if (family, bits) in _OTHER_WIDTHS:
-            return TypeSpec(_OTHER_WIDTHS[(family, bits)], note=note)
-        return None
+        index = INDEX_BY_NAME.get(f"{family}{bits}")  # UNSIGNED8 ... UNSIGNED64, INTEGER8 ... INTEGER64
+        return TypeSpec(index, note=note) if index is not None else None
     return None
 
 

@@ -48,6 +48,7 @@ from ..model import (
     Variable,
 )
 from ..model.canopennode import count_label_for, stack_reads_at_init, standard_storage_group
+from ..model.datatypes import DOMAIN
 
 VAR, ARR, REC = "VAR", "ARR", "REC"
 _KINDS = {ObjectKind.VAR: VAR, ObjectKind.DOMAIN: VAR, ObjectKind.ARRAY: ARR, ObjectKind.RECORD: REC}
@@ -186,7 +187,7 @@ def _length(dtype: DataType, value: Value | None, minimum: int | None) -> int:
         return 1
     if dtype.bits is not None:
         return dtype.bits // 8
-    if dtype.index == 0x000F:  # DOMAIN: the application streams it
+    if dtype.index == DOMAIN.index:  # DOMAIN: the application streams it
         return 0
     held = _text_bytes(dtype, value)
     return max(len(held) if held is not None else 0, (minimum or 0) * (2 if dtype.kind is ValueKind.UNICODE else 1))
@@ -254,7 +255,7 @@ class _Builder:
             held = bytes(size)
             self.note(where, "no default value: 0, as CO_CANopenInit reads it from the OD")
         stored = size > 0 and (held is not None or textual)
-        if not stored and dtype.index != 0x000F:
+        if not stored and dtype.index != DOMAIN.index:
             self.note(where, "no default value: no memory in the OD, the application provides it (OD_extension_init)")
         default = held if held is not None else bytes(size)
         return NodeEntry(subindex, var.name, member, dtype, _attributes(dtype, var, info), size, stored, default)

@@ -3,53 +3,58 @@
 from __future__ import annotations
 
 from ..model import AccessType
+from ..model.datatypes import DOMAIN as DOMAIN_TYPE
+from ..model.datatypes import INDEX_BY_NAME
+from ..model.datatypes import OCTET_STRING as OCTET_STRING_TYPE
 
 NS_1_0 = "http://www.canopen.org/xml/1.0"
 NS_1_1 = "http://www.canopen.org/xml/1.1"
 NAMESPACES = (NS_1_0, NS_1_1)
 XSI = "http://www.w3.org/2001/XMLSchema-instance"
 
-# CiA 311 (after IEC 61131-3) names the simple types of a parameter by element; CiA 301 index of each.
-TYPE_ELEMENTS: dict[str, int] = {
-    "BOOL": 0x0001,
-    "SINT": 0x0002,
-    "CHAR": 0x0002,
-    "INT": 0x0003,
-    "DINT": 0x0004,
-    "USINT": 0x0005,
-    "BYTE": 0x0005,
-    "UINT": 0x0006,
-    "WORD": 0x0006,
-    "UDINT": 0x0007,
-    "DWORD": 0x0007,
-    "REAL": 0x0008,
-    "STRING": 0x0009,
-    "BITSTRING": 0x000A,
-    "WSTRING": 0x000B,
-    "LREAL": 0x0011,
-    "LINT": 0x0015,
-    "ULINT": 0x001B,
-    "LWORD": 0x001B,
+# CiA 311 (after IEC 61131-3) names the simple types of a parameter by element; the CiA 301 type of each.
+_TYPE_OF_ELEMENT = {
+    "BOOL": "BOOLEAN",
+    "SINT": "INTEGER8",
+    "CHAR": "INTEGER8",
+    "INT": "INTEGER16",
+    "DINT": "INTEGER32",
+    "USINT": "UNSIGNED8",
+    "BYTE": "UNSIGNED8",
+    "UINT": "UNSIGNED16",
+    "WORD": "UNSIGNED16",
+    "UDINT": "UNSIGNED32",
+    "DWORD": "UNSIGNED32",
+    "REAL": "REAL32",
+    "STRING": "VISIBLE_STRING",
+    "BITSTRING": "OCTET_STRING",
+    "WSTRING": "UNICODE_STRING",
+    "LREAL": "REAL64",
+    "LINT": "INTEGER64",
+    "ULINT": "UNSIGNED64",
+    "LWORD": "UNSIGNED64",
 }
+TYPE_ELEMENTS: dict[str, int] = {element: INDEX_BY_NAME[name] for element, name in _TYPE_OF_ELEMENT.items()}
 # The element written for each CiA 301 type; types CiA 311 has no element for are written as
 # BITSTRING, with the exact type in the CANopenObject's dataType attribute.
-ELEMENT_OF_TYPE: dict[int, str] = {
-    0x0001: "BOOL",
-    0x0002: "SINT",
-    0x0003: "INT",
-    0x0004: "DINT",
-    0x0005: "USINT",
-    0x0006: "UINT",
-    0x0007: "UDINT",
-    0x0008: "REAL",
-    0x0009: "STRING",
-    0x000B: "WSTRING",
-    0x0011: "LREAL",
-    0x0015: "LINT",
-    0x001B: "ULINT",
-}
-DOMAIN = 0x000F
-OCTET_STRING = 0x000A
+_WRITTEN = (
+    "BOOL",
+    "SINT",
+    "INT",
+    "DINT",
+    "USINT",
+    "UINT",
+    "UDINT",
+    "REAL",
+    "STRING",
+    "WSTRING",
+    "LREAL",
+    "LINT",
+    "ULINT",
+)
+ELEMENT_OF_TYPE: dict[int, str] = dict(sorted((TYPE_ELEMENTS[element], element) for element in _WRITTEN))
+DOMAIN = DOMAIN_TYPE.index
+OCTET_STRING = OCTET_STRING_TYPE.index
 
 PARAMETER_ACCESS: dict[str, AccessType] = {
     "const": AccessType.CONST,

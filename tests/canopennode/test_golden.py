@@ -7,12 +7,11 @@ When a change of the output is intended, regenerate and review the diff:
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from cnokit import gen
 
-from support import ROOT
+from support import ROOT, assert_golden
 
 GOLDEN = Path(__file__).resolve().parent / "golden"
 
@@ -22,9 +21,5 @@ def test_blank_device_matches_the_golden_files(tmp_path: Path) -> None:
     assert result.returncode == 0, result.stderr
     files = {p.name: p.read_text(encoding="utf-8") for p in sorted(tmp_path.iterdir())}
     assert sorted(files) == ["OD.c", "OD.h"]
-    if os.environ.get("UPDATE_GOLDEN") == "1":
-        GOLDEN.mkdir(exist_ok=True)
-        for name, text in files.items():
-            (GOLDEN / name).write_text(text, encoding="utf-8")
-    drifted = [n for n, text in files.items() if not (GOLDEN / n).is_file() or (GOLDEN / n).read_text("utf-8") != text]
-    assert not drifted, f"{drifted} differ from {GOLDEN}; if intended, run with UPDATE_GOLDEN=1 and review the diff"
+    for name, text in files.items():
+        assert_golden(GOLDEN / name, text)

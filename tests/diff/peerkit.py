@@ -3,9 +3,10 @@ differential test of `diff`. A VAR's entry has sub-index None, as in our change 
 
 from __future__ import annotations
 
-import warnings
 from pathlib import Path
 from typing import Any
+
+from peermatrix import canopen_objects, canopen_od
 
 ENTRY_ATTRIBUTES = ("name", "data_type", "access_type", "pdo_mappable", "default", "value", "min", "max", "relative")
 DEVICE_ATTRIBUTES = (
@@ -22,24 +23,20 @@ _SIGNED_BITS = {0x2: 8, 0x3: 16, 0x4: 32, 0x10: 24, 0x12: 40, 0x13: 48, 0x14: 56
 
 
 def read(path: Path) -> Reading | None:
-    """python-canopen's reading of a file, None when it cannot read it."""
-    import canopen
-
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            od = canopen.import_od(str(path))
-    except Exception:  # python-canopen fails in its own ways on some real files; those pairs are skipped
+    """python-canopen's reading of a file, None when it cannot read it (python-canopen fails in its own
+    ways on some real files; those pairs are skipped)."""
+    od = canopen_od(path)
+    if isinstance(od, str):
         return None
     reading: Reading = {}
-    for index, obj in od.items():
-        if isinstance(obj, canopen.objectdictionary.ODVariable):
+    for index, obj, subs in canopen_objects(od):
+        if subs is None:
             reading[index, None, "exists"] = "var"
             _variable(reading, index, None, obj)
             continue
         reading[index, None, "exists"] = type(obj).__name__
         reading[index, None, "name"] = obj.name
-        for sub, var in obj.subindices.items():
+        for sub, var in subs.items():
             reading[index, sub, "exists"] = True
             _variable(reading, index, sub, var)
     info = od.device_information

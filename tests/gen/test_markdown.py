@@ -4,15 +4,14 @@
 from __future__ import annotations
 
 import re
-import shutil
 from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from pykit import (
-    GOLDEN,
     LINK,
+    assert_example_golden,
     check_markdown,
     eds_text,
     generate,
@@ -33,7 +32,7 @@ from pykit import (
 from cantools_od.render import renderer
 from cantools_od.render.escape import markdown_cell, markdown_text
 
-from support import EXAMPLES, assert_golden
+from support import EXAMPLES
 
 pytest.importorskip("markdown_it", reason="markdown-it-py is in the test extras")
 
@@ -60,13 +59,7 @@ HOSTILE = [
 
 @pytest.mark.parametrize("name", EXAMPLE_FILES)
 def test_markdown_golden(name: str, tmp_path: Path) -> None:
-    stem = Path(name).stem
-    text = generate(EXAMPLES / name, "markdown", stem)
-    copy = tmp_path / name  # the same file elsewhere: the output does not depend on where it is
-    shutil.copy(EXAMPLES / name, copy)
-    assert generate(copy, "markdown", stem) == text
-    golden = GOLDEN / "markdown" / f"{stem}.md"
-    assert_golden(golden, text)
+    assert_example_golden(name, "markdown", ".md", tmp_path)
 
 
 @pytest.mark.parametrize("name", EXAMPLE_FILES)

@@ -19,8 +19,8 @@ from typing import Any
 import canopen
 import pytest
 from pykit import (
-    GOLDEN,
     ODD_PDOS,
+    assert_example_golden,
     canopen_bytes,
     canopen_pdos,
     generate,
@@ -34,7 +34,7 @@ from pykit import (
 
 from cantools_od import load, to_canopen
 
-from support import EXAMPLES, assert_golden, corpus_files
+from support import EXAMPLES, corpus_files
 
 EXAMPLE_FILES = ["io_device.eds", "cia402_drive.eds"]
 
@@ -66,13 +66,7 @@ def io_module(tmp_path: Path) -> ModuleType:
 
 @pytest.mark.parametrize("name", EXAMPLE_FILES)
 def test_python_golden(name: str, tmp_path: Path) -> None:
-    stem = Path(name).stem
-    text = generate(EXAMPLES / name, "python", stem)
-    copy = tmp_path / name  # the same file elsewhere: the output does not depend on where it is
-    shutil.copy(EXAMPLES / name, copy)
-    assert generate(copy, "python", stem) == text
-    golden = GOLDEN / "python" / f"{stem}.py"
-    assert_golden(golden, text)
+    assert_example_golden(name, "python", ".py", tmp_path)
 
 
 def test_python_cli_writes_module(tmp_path: Path) -> None:

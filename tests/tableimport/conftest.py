@@ -1,4 +1,4 @@
-"""Make tests/ importable (support, vendorkit) however pytest is started."""
+"""Make tests/ importable (support, manualkit) however pytest is started."""
 
 from __future__ import annotations
 

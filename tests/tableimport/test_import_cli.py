@@ -92,3 +92,14 @@ def test_forced_layout(tmp_path: Path) -> None:
 def test_help_lists_the_command() -> None:
     result = run("--help")
     assert "import-table" in result.stdout
+
+
+def test_a_manual_block_with_a_bad_index_is_reported_once(tmp_path: Path) -> None:
+    """A block of a manual's text is read as the object's and the sub-object's entries: one warning."""
+    block = "Index\t{}\nName\tSpeed\nObject code\tVAR\nData type\tUNSIGNED16\nAccess\trw\n"
+    (tmp_path / "manual.txt").write_text(block.format("1000h") + "\n" + block.format("20xxh"), encoding="utf-8")
+    result = subprocess.run(
+        [*cli_command(), "import-table", "manual.txt", "-o", "device.eds"], cwd=tmp_path, capture_output=True, text=True
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stderr.count("[IMP011]") == 1, result.stderr

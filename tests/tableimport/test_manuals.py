@@ -1,6 +1,6 @@
 """The four vendor manuals of ../shared/seeds: counts, sample objects field by field, conflicts.
 
-Coverage and correctness are measured against independent counts (tests/vendorkit.py): every
+Coverage and correctness are measured against independent counts (tests/manualkit.py): every
 (index, sub-index) pair the manual documents, and the access and data type it states where it
 states exactly one. The tests skip when ../shared is absent."""
 
@@ -10,7 +10,7 @@ from functools import cache
 from pathlib import Path
 
 import pytest
-from vendorkit import COUNTERS, MANUALS, SEEDS, score
+from manualkit import COUNTERS, MANUALS, SEEDS, score
 
 from cantools_od.api import save
 from cantools_od.model import AccessType, NodeIdExpr, ObjectKind

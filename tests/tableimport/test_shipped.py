@@ -8,7 +8,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from vendorkit import MANUALS, SEEDS
+from manualkit import MANUALS, SEEDS
 
 from cantools_od import load
 from cantools_od.api import dumps

@@ -137,3 +137,15 @@ def test_gen_fails_on_a_refused_xdd_and_writes_nothing(tmp_path: Path) -> None:
         assert result.returncode == 1, result.stderr
         assert "XDD001" in result.stderr and "Traceback" not in result.stderr
         assert not out.exists()
+
+
+def test_lint_of_a_refused_xdd_reports_only_why_it_was_refused(tmp_path: Path) -> None:
+    """Nothing of a refused file was read: "mandatory object missing" would blame the device for the reader."""
+    from support import cli_command
+
+    source = tmp_path / "broken.xdd"
+    source.write_bytes(b'<?xml version="1.0"?>\n<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1">\n')
+    result = subprocess.run([*cli_command(), "lint", str(source)], capture_output=True, text=True)
+    assert result.returncode == 1, result.stderr
+    codes = [line.rsplit("[", 1)[-1].rstrip("]") for line in result.stdout.splitlines() if line.endswith("]")]
+    assert codes == ["XDD001"], result.stdout

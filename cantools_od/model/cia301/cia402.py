@@ -26,6 +26,9 @@ from .definitions import (
 
 PROFILE = 402
 CLAUSE = "CiA 402-2"
+AREA = range(0x6000, 0x6800)  # the first logical device's profile objects
+# The profile's record data types (of 60C2h and of 60C4h).
+INTERPOLATION_TIME_PERIOD_TYPE, INTERPOLATION_DATA_CONFIGURATION_TYPE = 0x0080, 0x0081
 _O = Mapping.OPTIONAL
 
 

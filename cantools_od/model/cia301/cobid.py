@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from ..device import Device
 from ..source import Location
 from ..values import NodeIdExpr
+from .objects import RX, TX
 from .slots import Locator, Slot, as_int
 
 VALID, RTR, EXTENDED = 1 << 31, 1 << 30, 1 << 29  # bit 31 set: invalid; 30: no RTR / produces; 29: 29-bit
@@ -16,8 +17,9 @@ BASE_11BIT, BASE_29BIT = 0x7FF, 0x1FFFFFFF
 HIGH_BITS = BASE_29BIT & ~BASE_11BIT  # bits 28-11: 0 in an 11-bit COB-ID
 ALL_NODE_IDS = range(1, 128)
 
-# The pre-defined connection set: COB-ID = base + node-ID (PDOs 1-4: pdo.PREDEFINED).
+# The pre-defined connection set: COB-ID = base + node-ID.
 EMCY_BASE, SDO_RX_BASE, SDO_TX_BASE, HEARTBEAT_BASE = 0x080, 0x600, 0x580, 0x700
+PREDEFINED = {RX: (0x200, 0x300, 0x400, 0x500), TX: (0x180, 0x280, 0x380, 0x480)}  # PDOs 1-4
 SYNC_ID, TIME_ID = 0x080, 0x100
 SERVICE_IDS = range(SYNC_ID, TIME_ID + 1)  # SYNC, EMCY of the pre-defined set, TIME
 # CAN-IDs no PDO may use (CiA 301 v4.2, restricted CAN-IDs).

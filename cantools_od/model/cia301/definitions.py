@@ -14,7 +14,22 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from enum import Enum
 
+from ..datatypes import INDEX_BY_NAME, standard_type
 from ..objects import AccessType, ObjectKind
+from .objects import (
+    COMM_BASE,
+    DEVICE_TYPE,
+    ERROR_REGISTER,
+    FIRST_SDO_SERVER,
+    IDENTITY,
+    MAP_BASE,
+    MAX_ENTRIES,
+    PDO_SPAN,
+    RX,
+    SDO_CLIENTS,
+    SDO_SERVERS,
+    TX,
+)
 
 _A = AccessType
 RO = frozenset({_A.RO, _A.CONST})
@@ -26,9 +41,15 @@ RW_OR_RO = RW | RO
 """The standard lets the device choose (a fixed COB-ID, a fixed heartbeat time)."""
 WRITABLE = RW | WO
 
-BOOLEAN, INTEGER8, INTEGER16, INTEGER32 = 0x0001, 0x0002, 0x0003, 0x0004
-UNSIGNED8, UNSIGNED16, UNSIGNED32, UNSIGNED64 = 0x0005, 0x0006, 0x0007, 0x001B
-VISIBLE_STRING, OCTET_STRING, DOMAIN = 0x0009, 0x000A, 0x000F
+_TYPE = INDEX_BY_NAME
+BOOLEAN, INTEGER8, INTEGER16, INTEGER32 = _TYPE["BOOLEAN"], _TYPE["INTEGER8"], _TYPE["INTEGER16"], _TYPE["INTEGER32"]
+UNSIGNED8, UNSIGNED16, UNSIGNED32 = _TYPE["UNSIGNED8"], _TYPE["UNSIGNED16"], _TYPE["UNSIGNED32"]
+UNSIGNED64, VISIBLE_STRING, OCTET_STRING, DOMAIN = (
+    _TYPE["UNSIGNED64"],
+    _TYPE["VISIBLE_STRING"],
+    _TYPE["OCTET_STRING"],
+    _TYPE["DOMAIN"],
+)
 
 
 class Mapping(Enum):
@@ -48,6 +69,11 @@ class Entry:
     mapping: Mapping = Mapping.NO
     values: tuple[tuple[int, int], ...] | None = None
     """The allowed values as inclusive ranges; None: any value of the data type."""
+    usual: AccessType | None = None
+    """The access type devices all but always give it (what the table importer assumes when a manual is
+    silent); None where devices differ (COB-IDs, strings, PDO entries)."""
+    eds_name: str | None = None
+    """The ParameterName EDS files commonly give it, where that differs from the standard's name."""
 
 
 @dataclass(frozen=True)
@@ -68,6 +94,8 @@ class Definition:
     kinds: frozenset[ObjectKind] = field(default_factory=frozenset)
     """Object types the standard accepts besides `kind` (a VAR of DataType DOMAIN for a DOMAIN)."""
     rest_until: int = 0xFE
+    eds_name: str | None = None
+    """The ParameterName EDS files commonly give it, where that differs from the standard's name."""
 
     @property
     def indices(self) -> range:
@@ -87,25 +115,30 @@ CIA302_2 = "CiA 302-2"
 CIA302_3 = "CiA 302-3"
 
 
-def count_entry(name: str = "Highest sub-index supported", access: frozenset[AccessType] = RO, *values: int) -> Entry:
+def count_entry(
+    name: str = "Highest sub-index supported", access: frozenset[AccessType] = RO, *values: int,
+    usual: AccessType | None = AccessType.RO,
+) -> Entry:  # fmt: skip
     ranges = ((values[0], values[1]),) if values else None
-    return Entry(name, UNSIGNED8, access, values=ranges)
+    return Entry(name, UNSIGNED8, access, values=ranges, usual=usual)
 
 
 def var(
     index: int, name: str, data_type: int, access: frozenset[AccessType], mapping: Mapping = Mapping.NO,
-    clause: str = CIA301, values: tuple[tuple[int, int], ...] | None = None,
+    clause: str = CIA301, values: tuple[tuple[int, int], ...] | None = None, usual: AccessType | None = None,
+    eds_name: str | None = None,
 ) -> Definition:  # fmt: skip
-    return Definition(index, name, ObjectKind.VAR, clause, (Entry(name, data_type, access, mapping, values),))
+    entry = Entry(name, data_type, access, mapping, values, usual, eds_name)
+    return Definition(index, name, ObjectKind.VAR, clause, (entry,), eds_name=eds_name)
 
 
 def array(
     index: int, name: str, element: Entry, count: Entry | None = None, clause: str = CIA301, last: int = -1,
-    named: tuple[Entry, ...] = (),
+    named: tuple[Entry, ...] = (), eds_name: str | None = None,
 ) -> Definition:  # fmt: skip
     """An ARRAY: sub-index 0 counts the elements, which all have one data type (the first may be named)."""
     subs = (count or count_entry(), *named)
-    return Definition(index, name, ObjectKind.ARRAY, clause, subs, element, last)
+    return Definition(index, name, ObjectKind.ARRAY, clause, subs, element, last, eds_name=eds_name)
 
 
 def record(
@@ -116,17 +149,23 @@ def record(
     return Definition(index, name, ObjectKind.RECORD, clause, subs, rest, last, rest_until=rest_until)
 
 
-_PDO_COMM = (
+PDO_COMM_SUBS = (
     count_entry("Highest sub-index supported", RO, 2, 6),
-    Entry("COB-ID", UNSIGNED32, RW_OR_RO),
+    Entry("COB-ID", UNSIGNED32, RW_OR_RO, eds_name="COB-ID used by PDO"),
     Entry("Transmission type", UNSIGNED8, RW_OR_RO),
     Entry("Inhibit time", UNSIGNED16, RW_OR_RO),
     Entry("Compatibility entry", UNSIGNED8, RW_OR_RO),
     Entry("Event timer", UNSIGNED16, RW_OR_RO),
     Entry("SYNC start value", UNSIGNED8, RW_OR_RO),
 )
-_PDO_MAP_COUNT = Entry("Number of mapped objects", UNSIGNED8, RW_OR_RO, values=((0, 0x40),))
-_PDO_MAP_ENTRY = Entry("Mapped object", UNSIGNED32, RW_OR_RO)
+
+
+def _last(base: int) -> int:
+    return base + PDO_SPAN - 1
+
+
+_PDO_MAP_COUNT = Entry("Number of mapped objects", UNSIGNED8, RW_OR_RO, values=((0, MAX_ENTRIES),))
+_PDO_MAP_ENTRY = Entry("Mapped object", UNSIGNED32, RW_OR_RO, eds_name="Application object")
 _SDO = (  # mappable, so that an SDO manager can set up connections (CiA 302-5)
     Entry("COB-ID client to server", UNSIGNED32, RW_OR_RO, Mapping.OPTIONAL),
     Entry("COB-ID server to client", UNSIGNED32, RW_OR_RO, Mapping.OPTIONAL),
@@ -140,34 +179,35 @@ _OS = (
 _O = Mapping.OPTIONAL
 
 DEFINITIONS: tuple[Definition, ...] = (
-    var(0x1000, "Device type", UNSIGNED32, RO),
-    var(0x1001, "Error register", UNSIGNED8, RO, _O),
-    var(0x1002, "Manufacturer status register", UNSIGNED32, RO, _O),
-    array(0x1003, "Pre-defined error field", Entry("Standard error field", UNSIGNED32, RO),
-          count_entry("Number of errors", RW, 0, 0xFE)),
-    var(0x1005, "COB-ID SYNC message", UNSIGNED32, RW_OR_RO),
-    var(0x1006, "Communication cycle period", UNSIGNED32, RW_OR_RO),
-    var(0x1007, "Synchronous window length", UNSIGNED32, RW_OR_RO),
+    var(DEVICE_TYPE, "Device type", UNSIGNED32, RO, usual=_A.RO),
+    var(ERROR_REGISTER, "Error register", UNSIGNED8, RO, _O, usual=_A.RO),
+    var(0x1002, "Manufacturer status register", UNSIGNED32, RO, _O, usual=_A.RO),
+    array(0x1003, "Pre-defined error field", Entry("Standard error field", UNSIGNED32, RO, usual=_A.RO),
+          count_entry("Number of errors", RW, 0, 0xFE, usual=_A.RW)),
+    var(0x1005, "COB-ID SYNC message", UNSIGNED32, RW_OR_RO, eds_name="COB-ID SYNC"),
+    var(0x1006, "Communication cycle period", UNSIGNED32, RW_OR_RO, usual=_A.RW),
+    var(0x1007, "Synchronous window length", UNSIGNED32, RW_OR_RO, usual=_A.RW),
     var(0x1008, "Manufacturer device name", VISIBLE_STRING, RO),
     var(0x1009, "Manufacturer hardware version", VISIBLE_STRING, RO),
     var(0x100A, "Manufacturer software version", VISIBLE_STRING, RO),
-    var(0x100C, "Guard time", UNSIGNED16, RW_OR_RO),
-    var(0x100D, "Life time factor", UNSIGNED8, RW_OR_RO),
-    array(0x1010, "Store parameters", Entry("Save parameters", UNSIGNED32, RW_OR_RO),
+    var(0x100C, "Guard time", UNSIGNED16, RW_OR_RO, usual=_A.RW),
+    var(0x100D, "Life time factor", UNSIGNED8, RW_OR_RO, usual=_A.RW),
+    array(0x1010, "Store parameters", Entry("Save parameters", UNSIGNED32, RW_OR_RO, usual=_A.RW, eds_name="Save"),
           count_entry("Highest sub-index supported", RO, 1, 0x7F)),
-    array(0x1011, "Restore default parameters", Entry("Restore parameters", UNSIGNED32, RW_OR_RO),
+    array(0x1011, "Restore default parameters",
+          Entry("Restore parameters", UNSIGNED32, RW_OR_RO, usual=_A.RW, eds_name="Restore"),
           count_entry("Highest sub-index supported", RO, 1, 0x7F)),
-    var(0x1012, "COB-ID time stamp object", UNSIGNED32, RW_OR_RO),
-    var(0x1013, "High resolution time stamp", UNSIGNED32, RW_OR_RO, _O),
+    var(0x1012, "COB-ID time stamp object", UNSIGNED32, RW_OR_RO, eds_name="COB-ID TIME"),
+    var(0x1013, "High resolution time stamp", UNSIGNED32, RW_OR_RO, _O, usual=_A.RW),
     var(0x1014, "COB-ID EMCY", UNSIGNED32, RW_OR_RO),
-    var(0x1015, "Inhibit time EMCY", UNSIGNED16, RW_OR_RO),
-    array(0x1016, "Consumer heartbeat time", Entry("Consumer heartbeat time", UNSIGNED32, RW_OR_RO),
+    var(0x1015, "Inhibit time EMCY", UNSIGNED16, RW_OR_RO, usual=_A.RW),
+    array(0x1016, "Consumer heartbeat time", Entry("Consumer heartbeat time", UNSIGNED32, RW_OR_RO, usual=_A.RW),
           count_entry("Highest sub-index supported", RO, 1, 0x7F)),
-    var(0x1017, "Producer heartbeat time", UNSIGNED16, RW_OR_RO),
-    record(0x1018, "Identity object", count_entry("Highest sub-index supported", RO, 1, 4),
-           Entry("Vendor-ID", UNSIGNED32, RO), Entry("Product code", UNSIGNED32, RO),
-           Entry("Revision number", UNSIGNED32, RO), Entry("Serial number", UNSIGNED32, RO)),
-    var(0x1019, "Synchronous counter overflow value", UNSIGNED8, RW_OR_RO, values=((0, 0), (2, 240))),
+    var(0x1017, "Producer heartbeat time", UNSIGNED16, RW_OR_RO, usual=_A.RW),
+    record(IDENTITY, "Identity object", count_entry("Highest sub-index supported", RO, 1, 4),
+           Entry("Vendor-ID", UNSIGNED32, RO, usual=_A.RO), Entry("Product code", UNSIGNED32, RO, usual=_A.RO),
+           Entry("Revision number", UNSIGNED32, RO, usual=_A.RO), Entry("Serial number", UNSIGNED32, RO, usual=_A.RO)),
+    var(0x1019, "Synchronous counter overflow value", UNSIGNED8, RW_OR_RO, values=((0, 0), (2, 240)), usual=_A.RW),
     array(0x1020, "Verify configuration", Entry("Configuration", UNSIGNED32, RW_OR_RO),
           count_entry("Highest sub-index supported", RO, 2, 2),
           named=(Entry("Configuration date", UNSIGNED32, RW_OR_RO), Entry("Configuration time", UNSIGNED32, RW_OR_RO))),
@@ -183,16 +223,19 @@ DEFINITIONS: tuple[Definition, ...] = (
                  Entry("StdErr", UNSIGNED8, RO, _O))),
     array(0x1027, "Module list", Entry("Module", UNSIGNED16, RO), count_entry("Number of connected modules", RO)),
     array(0x1028, "Emergency consumer object", Entry("Emergency consumer", UNSIGNED32, RW_OR_RO)),
-    array(0x1029, "Error behavior object", Entry("Error class", UNSIGNED8, RW_OR_RO)),
+    array(0x1029, "Error behavior object", Entry("Error class", UNSIGNED8, RW_OR_RO, usual=_A.RW),
+          eds_name="Error behavior"),
     var(0x102A, "NMT inhibit time", UNSIGNED16, RW_OR_RO),
-    record(0x1200, "SDO server parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
-           Entry("Node-ID of the SDO client", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=0x127F),
-    record(0x1280, "SDO client parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
-           Entry("Node-ID of the SDO server", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=0x12FF),
-    record(0x1400, "RPDO communication parameter", *_PDO_COMM, last=0x15FF),
-    record(0x1600, "RPDO mapping parameter", _PDO_MAP_COUNT, last=0x17FF, rest=_PDO_MAP_ENTRY, rest_until=0x40),
-    record(0x1800, "TPDO communication parameter", *_PDO_COMM, last=0x19FF),
-    record(0x1A00, "TPDO mapping parameter", _PDO_MAP_COUNT, last=0x1BFF, rest=_PDO_MAP_ENTRY, rest_until=0x40),
+    record(SDO_SERVERS[0], "SDO server parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
+           Entry("Node-ID of the SDO client", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=SDO_SERVERS[-1]),
+    record(SDO_CLIENTS[0], "SDO client parameter", count_entry("Highest sub-index supported", RO, 2, 3), *_SDO,
+           Entry("Node-ID of the SDO server", UNSIGNED8, RW_OR_RO, Mapping.OPTIONAL), last=SDO_CLIENTS[-1]),
+    record(COMM_BASE[RX], "RPDO communication parameter", *PDO_COMM_SUBS, last=_last(COMM_BASE[RX])),
+    record(MAP_BASE[RX], "RPDO mapping parameter", _PDO_MAP_COUNT, last=_last(MAP_BASE[RX]), rest=_PDO_MAP_ENTRY,
+           rest_until=MAX_ENTRIES),
+    record(COMM_BASE[TX], "TPDO communication parameter", *PDO_COMM_SUBS, last=_last(COMM_BASE[TX])),
+    record(MAP_BASE[TX], "TPDO mapping parameter", _PDO_MAP_COUNT, last=_last(MAP_BASE[TX]), rest=_PDO_MAP_ENTRY,
+           rest_until=MAX_ENTRIES),
     array(0x1F22, "Concise DCF", Entry("Concise DCF", DOMAIN, RW_OR_RO), clause=CIA302_3),
     array(0x1F25, "Configure slave", Entry("Configure slave", None, WRITABLE), clause=CIA302_3),
     array(0x1F50, "Program data", Entry("Program", DOMAIN, WRITABLE), clause=CIA302_3),
@@ -229,3 +272,24 @@ _BY_INDEX = {index: definition for definition in DEFINITIONS for index in defini
 def definition(index: int) -> Definition | None:
     """The standard's definition of the object at `index` in 1000h-1FFFh, if it defines one."""
     return _BY_INDEX.get(index)
+
+
+# The record data types CiA 301 defines at 0020h-0023h, each by the object whose layout it is.
+_RECORD_TYPE_OBJECTS = {
+    "PDO_COMMUNICATION_PARAMETER": COMM_BASE[RX],
+    "PDO_MAPPING": MAP_BASE[RX],
+    "SDO_PARAMETER": FIRST_SDO_SERVER,
+    "IDENTITY": IDENTITY,
+}
+
+
+def record_type_layout(type_index: int) -> dict[int, int] | None:
+    """Sub-index -> data type of a standard record data type (PDO_MAPPING, IDENTITY...), else None."""
+    dtype = standard_type(type_index)
+    index = _RECORD_TYPE_OBJECTS.get(dtype.name) if dtype is not None else None
+    found = definition(index) if index is not None else None
+    if found is None:
+        return None
+    subs = range(len(found.subs)) if found.rest is None else range(found.rest_until + 1)
+    entries = ((sub, found.entry(sub)) for sub in subs)
+    return {sub: entry.data_type for sub, entry in entries if entry is not None and entry.data_type is not None}

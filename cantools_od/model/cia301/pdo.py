@@ -13,35 +13,32 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
-from ..datatypes import DataType, standard_type
+from ..datatypes import BOOLEAN, UNSIGNED32, DataType, standard_type
 from ..device import Device
 from ..objects import Object, ObjectKind
+from .cobid import PREDEFINED as PREDEFINED  # the COB-ID bases of PDOs 1-4 live with the others
 from .cobid import Cob, cob_of
+from .definitions import PDO_COMM_SUBS
+from .objects import COMM_BASE as COMM_BASE  # the record ranges live in .objects (no imports): re-exported
 from .objects import DATA_TYPE_AREA
+from .objects import MAP_BASE as MAP_BASE
+from .objects import MAX_ENTRIES as MAX_ENTRIES
+from .objects import PDO_AREA as PDO_AREA
+from .objects import PDO_SPAN as PDO_SPAN
+from .objects import RX as RX
+from .objects import TX as TX
 from .slots import Slot, as_int
 
-RX, TX = "rx", "tx"
-COMM_BASE = {RX: 0x1400, TX: 0x1800}
-MAP_BASE = {RX: 0x1600, TX: 0x1A00}
-PDO_SPAN = 0x200  # 512 PDOs per direction
-PDO_AREA = range(COMM_BASE[RX], MAP_BASE[TX] + PDO_SPAN)  # 1400h-1BFFh
-MAX_ENTRIES = 0x40
 SAM_MPDO, DAM_MPDO = 0xFE, 0xFF
 CLASSIC_CAN_BITS, CAN_FD_BITS = 64, 512
-# The pre-defined connection set's COB-ID bases of PDOs 1-4 (COB-ID = base + node-ID).
-PREDEFINED = {RX: (0x200, 0x300, 0x400, 0x500), TX: (0x180, 0x280, 0x380, 0x480)}
 
-U8, U16, U32 = 0x0005, 0x0006, 0x0007
 # The PDO_COMMUNICATION_PARAMETER record (0020h): sub-index -> (name, data type).
-COMM_SUBS = {
-    1: ("COB-ID", U32),
-    2: ("Transmission type", U8),
-    3: ("Inhibit time", U16),
-    4: ("Compatibility entry", U8),
-    5: ("Event timer", U16),
-    6: ("SYNC start value", U8),
+COMM_SUBS: dict[int, tuple[str, int]] = {
+    sub: (entry.name, entry.data_type) for sub, entry in enumerate(PDO_COMM_SUBS) if sub and entry.data_type is not None
 }
-MAPPING_ENTRY_TYPE = U32
+MAPPING_ENTRY_TYPE = UNSIGNED32.index
+# The data types a device may map as dummy entries ([DummyUsage] Dummy0001-Dummy0007 of CiA 306).
+DUMMY_TYPES = range(BOOLEAN.index, UNSIGNED32.index + 1)
 
 
 def frame_bits(can_fd: bool) -> int:

@@ -4,6 +4,7 @@ runs them (one process each), with wall-clock time and peak resident memory of t
     python bench/bench_scale.py                   # 5, 25 and 50 MB; lint and gen -t c
     python bench/bench_scale.py 1M 5M -t c -t rust
     python bench/bench_scale.py --json
+    python bench/bench_scale.py 25M 50M --max-ratio 10   # exit 1 when a run's peak RSS is above 10x
 
 The files come from bench/synthetic_eds.py. Target (issue #9): peak RSS at most 10 times the file
 size, and time growing linearly with it. See bench/README.md for figures.
@@ -77,11 +78,28 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("sizes", nargs="*", type=parse_size, default=[parse_size(s) for s in ("5M", "25M", "50M")])
     parser.add_argument("-t", "--target", dest="targets", action="append", help="gen targets (default: c)")
     parser.add_argument("--json", action="store_true")
+    parser.add_argument("--max-ratio", type=float, help="exit 1 when a run's peak RSS exceeds this many times the file")
     args = parser.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="bench_scale_") as folder:
         rows = run(args.sizes, args.targets or ["c"], Path(folder))
     print(json.dumps(rows, indent=2) if args.json else report(rows))
-    return 0
+    over = [] if args.max_ratio is None else above(rows, args.max_ratio)
+    for line in over:
+        print(line, file=sys.stderr)
+    return 1 if over else 0
+
+
+def above(rows: list[dict[str, object]], ratio: float) -> list[str]:
+    """One line per run whose peak RSS is more than `ratio` times its file's size."""
+    lines = []
+    for row in rows:
+        size = int(row["bytes"])  # type: ignore[call-overload]
+        for run, result in row.items():
+            if isinstance(result, dict) and result["peak_rss"] > ratio * size:
+                lines.append(
+                    f"{size / 1e6:.1f} MB {run}: peak RSS {result['peak_rss'] / size:.1f}x the file, above {ratio}x"
+                )
+    return lines
 
 
 if __name__ == "__main__":

@@ -273,6 +273,8 @@ FORM_FEED = ([("insert", _at(IO, b"Device type"), "\x0c")], 1, "Edited", 5)
 LONE_CR = ([("insert", _at(IO, b"[1001]"), "\r")], 1, "Edited", 5)
 DUPLICATE_REMOVED = ([("duplicate", _line_of(IO, b"DefaultValue=0\nPDOMapping=1\n\n[1003]"))], 1, "Edited", None)
 LATIN1 = ([("change", _at(IO, b"Device type"), 0x81)], 1, "Edited", 5)
+# A comment above a DefaultValue that the edit clears: the key stays, empty, under its comment.
+COMMENTED_CLEARED = ([("insert", _at(IO, b"DefaultValue=0\nPDOMapping=1\n\n[1003]"), ";note\n")], 1, "Edited", None)
 
 
 @examples(150)
@@ -280,6 +282,7 @@ LATIN1 = ([("change", _at(IO, b"Device type"), 0x81)], 1, "Edited", 5)
 @example(IO, *LONE_CR)
 @example(IO, *DUPLICATE_REMOVED)
 @example(IO, *LATIN1)
+@example(IO, *COMMENTED_CLEARED)
 @given(
     st.sampled_from(sorted(SOURCES)),
     st.lists(mutation, max_size=3),

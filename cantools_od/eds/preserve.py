@@ -185,6 +185,8 @@ def _plan(
                 if key in old.entries:  # a key that had a value and lost it; an empty key stays
                     for entry in entries:
                         edits[entry.line] = []
+                    if new.comments.get(key):  # as the canonical writer: a commented key is left empty
+                        edits[last.line] = [raw[: last.value_col - 1] + (_eol(raw) or eol)]
             elif new.entries[key] != old.entries.get(key):
                 text = _in_style_of(last.value, new.entries[key])
                 edits[last.line] = [raw[: last.value_col - 1] + text + (_eol(raw) or eol)]

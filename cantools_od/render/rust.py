@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from ..model import STANDARD_TYPES, NodeIdExpr, ObjectKind, ValueKind
 from ..views.codegen import DeviceView, EntryView, ObjectView
-from . import escape, rust_layout, stream_template, whole
+from . import Each, escape, rust_layout, stream_template, whole
 from .rust_names import TypeNames, lower, upper
 from .rust_pdo import RustPdo, pdos
 from .rust_types import byte_string, in_type_range, node_expr, rust_type, scalar_literal, zero
@@ -99,8 +99,8 @@ class RustObject:
 class RustModule:
     view: DeviceView
     node_id: int | None
-    objects: list[RustObject]
-    entries: list[RustEntry]
+    objects: Each[RustObject]
+    entries: Each[RustEntry]
     pdos: list[RustPdo]
     data_types: list[tuple[str, str]] = field(default_factory=list)  # (NAME, 0x0007)
 
@@ -176,7 +176,7 @@ def _value(entry: RustEntry) -> str | None:
     return entry.default or zero(entry.ty or "")
 
 
-def _array(obj: ObjectView, entries: list[RustEntry], types: TypeNames) -> RustArray | None:
+def _array(obj: ObjectView, entries: list[RustEntry], name: str) -> RustArray | None:
     elements = [e for e in entries if e.view.subindex > 0]
     if obj.kind is not ObjectKind.ARRAY or not elements or entries[0].view.subindex != 0:
         return None
@@ -192,10 +192,10 @@ def _array(obj: ObjectView, entries: list[RustEntry], types: TypeNames) -> RustA
     pairs = enumerate(zip(elements, values, strict=True))
     others = [(i, v if v is not None else e.node or "") for i, (e, v) in pairs if v != fill]
     node = any(v is None for v in values)
-    return RustArray(types.claim(obj.identifier, obj.index), ty, len(elements), fill, others, node)
+    return RustArray(name, ty, len(elements), fill, others, node)
 
 
-def _record(obj: ObjectView, entries: list[RustEntry], types: TypeNames) -> RustRecord | None:
+def _record(entries: list[RustEntry], name: str) -> RustRecord | None:
     fields: list[RustField] = []
     node_values: list[tuple[str, str]] = []
     skipped: list[str] = []
@@ -215,30 +215,51 @@ def _record(obj: ObjectView, entries: list[RustEntry], types: TypeNames) -> Rust
             skipped.append(member)
     if not fields:
         return None
-    return RustRecord(types.claim(obj.identifier, obj.index), fields, node_values, skipped)
+    return RustRecord(name, fields, node_values, skipped)
 
 
-def _object(obj: ObjectView, node_id: int | None, types: TypeNames) -> RustObject:
-    entries = [_entry(entry, node_id) for entry in sorted(obj.entries, key=lambda e: e.subindex)]
+def _entries(obj: ObjectView, node_id: int | None) -> list[RustEntry]:
+    return [_entry(entry, node_id) for entry in sorted(obj.entries, key=lambda e: e.subindex)]
+
+
+def _object(obj: ObjectView, node_id: int | None, type_name: str | None) -> RustObject:
+    entries = _entries(obj, node_id)
     kind = obj.kind.name
-    if obj.is_var:
+    if obj.is_var or type_name is None:
         return RustObject(obj, upper(obj.identifier), lower(obj.identifier), kind, entries)
-    array = _array(obj, entries, types)
-    record = None if array is not None else _record(obj, entries, types)
+    array = _array(obj, entries, type_name)
+    record = None if array is not None else _record(entries, type_name)
     return RustObject(obj, upper(obj.identifier), lower(obj.identifier), kind, entries, record, array)
 
 
+def _type_names(objects: list[ObjectView], node_id: int | None, types: TypeNames) -> dict[int, str]:
+    """The type name of each ARRAY or RECORD that gets a type, claimed in index order: a first pass that
+    keeps only the names, so that the objects' Rust forms can be made one at a time as they are rendered."""
+    names: dict[int, str] = {}
+    for obj in objects:
+        if obj.is_var:
+            continue
+        entries = _entries(obj, node_id)
+        if _array(obj, entries, "") is not None or _record(entries, "") is not None:
+            names[obj.index] = types.claim(obj.identifier, obj.index)
+    return names
+
+
 def module(view: DeviceView) -> RustModule:
-    """Everything the templates lay out, in index order."""
+    """Everything the templates lay out, in index order; objects and entries are made as they are read."""
     if view.problems:
         raise ValueError(f"cannot generate Rust: {view.problems[0].message}")
     node_id = view.node_id
     node_id = node_id if node_id is not None and 0 <= node_id <= 0xFF else None  # a DCF's NodeID may be anything
     rust_pdos = pdos(view, node_id)
-    types = TypeNames(pdo.name for pdo in rust_pdos)
-    objects = [_object(obj, node_id, types) for obj in sorted(view.objects, key=lambda o: o.index)]
+    ordered = sorted(view.objects, key=lambda o: o.index)
+    names = _type_names(ordered, node_id, TypeNames(pdo.name for pdo in rust_pdos))
+    objects = Each(lambda: (_object(obj, node_id, names.get(obj.index)) for obj in ordered), len(ordered))
+    entries = Each(
+        lambda: (entry for obj in ordered for entry in _entries(obj, node_id)),
+        sum(obj.entry_count for obj in ordered),
+    )
     data_types = [(t.name, f"0x{t.index:04X}") for t in STANDARD_TYPES.values()]
-    entries = [entry for obj in objects for entry in obj.entries]
     return RustModule(view, node_id, objects, entries, rust_pdos, data_types)
 
 

@@ -27,7 +27,7 @@ from .model.datatypes import BASIC_TYPE_RANGE, DOMAIN
 if TYPE_CHECKING:
     import canopen
 
-__all__ = ["OdObject", "OdValue", "OdVariable", "od_objects", "time_bytes", "to_canopen"]
+__all__ = ["OdObject", "OdValue", "OdVariable", "od_object", "od_objects", "time_bytes", "to_canopen"]
 
 DOMAIN_TYPE = DOMAIN.index
 LAST_BASIC_TYPE = BASIC_TYPE_RANGE[-1]
@@ -105,17 +105,19 @@ def _variable(device: Device, owner: Object, var: Variable, index: int, subindex
 
 def od_objects(device: Device) -> list[OdObject]:
     """The objects python-canopen's dictionary holds for `device`, in index order (no NULL or DEFTYPE)."""
-    objects: list[OdObject] = []
-    for index in sorted(device.objects):
-        obj = device.objects[index]
-        if obj.kind in (ObjectKind.NULL, ObjectKind.DEFTYPE):
-            continue
-        if not obj.has_subs:
-            objects.append(OdObject(index, obj.name, "var", (_variable(device, obj, obj, index, 0),)))
-            continue
-        variables = tuple(_variable(device, obj, obj.subs[sub], index, sub) for sub in sorted(obj.subs))
-        objects.append(OdObject(index, obj.name, "array" if obj.kind is ObjectKind.ARRAY else "record", variables))
-    return objects
+    found = (od_object(device, index) for index in sorted(device.objects))
+    return [obj for obj in found if obj is not None]
+
+
+def od_object(device: Device, index: int) -> OdObject | None:
+    """The object at `index` as python-canopen's dictionary holds it; None for NULL, DEFTYPE or no object."""
+    obj = device.objects.get(index)
+    if obj is None or obj.kind in (ObjectKind.NULL, ObjectKind.DEFTYPE):
+        return None
+    if not obj.has_subs:
+        return OdObject(index, obj.name, "var", (_variable(device, obj, obj, index, 0),))
+    variables = tuple(_variable(device, obj, obj.subs[sub], index, sub) for sub in sorted(obj.subs))
+    return OdObject(index, obj.name, "array" if obj.kind is ObjectKind.ARRAY else "record", variables)
 
 
 def resolve(value: OdValue, node_id: int | None) -> int | float | str | bytes | None:

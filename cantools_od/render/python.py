@@ -13,12 +13,13 @@ and to talk to a node. It holds:
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
+from itertools import chain, islice
 
-from ..interop import OdVariable, od_objects
+from ..interop import OdVariable, od_object
 from ..model import AccessType, Device, NodeIdExpr, ValueKind, standard_type
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
 from . import Each, stream_template, whole
@@ -105,7 +106,6 @@ def source_name(view: DeviceView) -> str:
 
 def _module(view: DeviceView) -> dict[str, object]:
     device = view.device
-    rows = {(row.index, row.subindex): row for obj in od_objects(device) for row in obj.variables}
     info = device.device_info
     product = info.product_name or view.name
     vendor = f" by {info.vendor_name}" if info.vendor_name else ""
@@ -135,11 +135,8 @@ def _module(view: DeviceView) -> dict[str, object]:
                 for entry in obj.entries
             )
         ),
-        "objects": _rows([_object_row(obj) for obj in view.objects], "_OBJECTS: Final[tuple[_Obj, ...]] = "),
-        "variables": _rows(
-            [_variable_row(rows[e.index, e.subindex]) for obj in view.objects for e in obj.entries],
-            "_VARIABLES: Final[tuple[_Var, ...]] = ",
-        ),
+        "objects": Each(lambda: _rows(map(_object_row, view.objects), "_OBJECTS: Final[tuple[_Obj, ...]] = ")),
+        "variables": Each(lambda: _rows(_variable_rows(view), "_VARIABLES: Final[tuple[_Var, ...]] = ")),
         "comments": py_long_str(_comments(device), 4, len("od.comments = ")),
         "device_information": _device_information(device),
         "baudrates": "{" + ", ".join(str(r * 1000) for r, on in sorted(info.baud_rates.items()) if on) + "}"
@@ -151,10 +148,27 @@ def _module(view: DeviceView) -> dict[str, object]:
     }
 
 
-def _rows(rows: list[str], assignment: str) -> str:
-    """A module-level tuple of rows (each already laid out at 4 spaces, with its comma)."""
-    inline = py_tuple_inline([row.strip().rstrip(",") for row in rows], 0, len(assignment))
-    return assignment + (inline if inline is not None else "(\n" + "\n".join(rows) + "\n)")
+def _rows(rows: Iterable[str], assignment: str) -> Iterator[str]:
+    """A module-level tuple of rows (each already laid out at 4 spaces, with its comma), line by line."""
+    rest = iter(rows)
+    first = list(islice(rest, 2))
+    inline = py_tuple_inline([row.strip().rstrip(",") for row in first], 0, len(assignment)) if len(first) < 2 else None
+    if inline is not None:
+        yield f"{assignment}{inline}\n"
+        return
+    yield f"{assignment}(\n"
+    for row in chain(first, rest):
+        yield f"{row}\n"
+    yield ")\n"
+
+
+def _variable_rows(view: DeviceView) -> Iterator[str]:
+    """The `_Var` row of every entry, an object at a time."""
+    for obj in view.objects:
+        od = od_object(view.device, obj.index)
+        rows = {row.subindex: row for row in od.variables} if od is not None else {}
+        for entry in obj.entries:
+            yield _variable_row(rows[entry.subindex])
 
 
 def _comments(device: Device) -> str:

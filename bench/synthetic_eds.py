@@ -7,6 +7,10 @@ manufacturer/profile objects from 0x2000 up: 40 % VAR, 60 % ARRAY/RECORD whose s
 grows with the requested size (an index has at most 255 sub-objects and there are 0x8000 indices
 from 0x2000 to 0x9FFF, so a large file has more sub-objects per object). Every key is spelled out
 as tools write it; output is deterministic for a given size.
+
+With `--canopennode` the file also passes `lint --profile canopennode` (so that `gen -t canopennode`
+renders it): it adds the communication objects CANopenNode's CANopen.c needs (1003h, 1014h, 1016h,
+1017h), and an ARRAY's elements share one access type.
 """
 
 from __future__ import annotations
@@ -39,9 +43,9 @@ def _entry(name: str, data_type: int, access: str, default: str, pdo: int) -> st
     )
 
 
-def _header(indices: list[int]) -> str:
+def _header(indices: list[int], extra: list[int]) -> str:
     comm = [0x1000, 0x1001, 0x1018]
-    pdo = [0x1400 + n for n in range(4)] + [0x1600 + n for n in range(4)]
+    pdo = extra + [0x1400 + n for n in range(4)] + [0x1600 + n for n in range(4)]
     pdo += [0x1800 + n for n in range(4)] + [0x1A00 + n for n in range(4)]
     parts = [
         "[FileInfo]\r\nFileName=synthetic.eds\r\nFileVersion=1\r\nFileRevision=0\r\nEDSVersion=4.0\r\n"
@@ -99,8 +103,27 @@ def _communication(mapped: list[tuple[int, int]]) -> str:
     return "".join(parts)
 
 
-def synthetic_eds(size: int) -> bytes:
-    """An EDS of about `size` bytes (at least a few kB)."""
+# Communication objects CANopenNode's CANopen.c needs besides 1000h, 1001h and 1018h.
+_CANOPENNODE_INDICES = [0x1003, 0x1014, 0x1016, 0x1017]
+
+
+def _canopennode_objects() -> str:
+    errors = [("Number of errors", 0x0005, "rw", "0", 0)]
+    errors += [(f"Standard error field {n}", 0x0007, "ro", "0", 0) for n in range(1, 9)]
+    consumers = [("Highest sub-index supported", 0x0005, "ro", "4", 0)]
+    consumers += [(f"Consumer heartbeat time {n}", 0x0007, "rw", "0", 0) for n in range(1, 5)]
+    return "".join(
+        [
+            _record(0x1003, "Pre-defined error field", 8, iter(errors)),
+            f"[1014]\r\n{_entry('COB-ID EMCY', 0x0007, 'ro', '$NODEID+0x80', 0)}",
+            _record(0x1016, "Consumer heartbeat time", 8, iter(consumers)),
+            f"[1017]\r\n{_entry('Producer heartbeat time', 0x0006, 'rw', '0', 0)}",
+        ]
+    )
+
+
+def synthetic_eds(size: int, canopennode: bool = False) -> bytes:
+    """An EDS of about `size` bytes (at least a few kB); with `canopennode`, one that passes that profile."""
     # 60 % of the indices are ARRAY/RECORD: enough sub-objects on average to fit `size` into the index range.
     average_subs = max(4, min(120, int(size / ((LAST - FIRST + 1) * 0.6 * _SUB_BYTES)) + 3))
     objects: list[str] = []
@@ -125,13 +148,16 @@ def synthetic_eds(size: int) -> bytes:
             subs = [("Highest sub-index supported", 0x0005, "ro", str(count), 0)]
             for sub in range(1, count + 1):
                 data_type, default = (0x0006, f"0x{sub:04X}") if is_array else _VAR_TYPES[(n + sub) % len(_VAR_TYPES)]
-                subs.append((f"Entry {sub}", data_type, _ACCESS[(n + sub) % len(_ACCESS)], default, 0))
+                access = _ACCESS[(n + (1 if is_array and canopennode else sub)) % len(_ACCESS)]
+                subs.append((f"Entry {sub}", data_type, access, default, 0))
             text = _record(index, f"{'Array' if is_array else 'Record'} {n}", 8 if is_array else 9, iter(subs))
         objects.append(text)
         indices.append(index)
         total += len(text)
         n += 1
-    return (_header(indices) + _communication(mapped) + "".join(objects)).encode("ascii")
+    extra = _CANOPENNODE_INDICES if canopennode else []
+    communication = _communication(mapped) + (_canopennode_objects() if canopennode else "")
+    return (_header(indices, extra) + communication + "".join(objects)).encode("ascii")
 
 
 def parse_size(text: str) -> int:
@@ -146,8 +172,9 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("size", type=parse_size, help="about how many bytes, e.g. 5M, 50M, 200K")
     parser.add_argument("-o", "--output", type=Path, help="the file to write (default: stdout)")
+    parser.add_argument("--canopennode", action="store_true", help="a file that passes lint --profile canopennode")
     args = parser.parse_args(argv)
-    data = synthetic_eds(args.size)
+    data = synthetic_eds(args.size, args.canopennode)
     if args.output is None:
         sys.stdout.buffer.write(data)
     else:

@@ -18,7 +18,7 @@ from ..model import ValueKind
 from ..model.canopennode import CONFIG_ARRAYS, CONFIG_ENTRIES
 from ..views.canopennode import ARR, REC, VAR, NodeEntry, NodeObject, NodeView
 from ..views.codegen import DeviceView
-from . import stream_template, whole
+from . import Each, stream_template, whole
 
 Fields = tuple[tuple[str, str], ...]  # (field, C value) pairs of one OD_obj_*_t
 Described = tuple[tuple["Stored", ...], tuple[Fields, ...]]
@@ -58,7 +58,7 @@ class CObject:
 @dataclass(frozen=True)
 class Group:
     name: str
-    objects: tuple[CObject, ...]
+    objects: Each[CObject]
 
 
 @dataclass(frozen=True)
@@ -69,7 +69,7 @@ class Context:
     counts: tuple[tuple[str, int], ...]
     arrays: tuple[tuple[str, int], ...]
     groups: tuple[Group, ...]
-    objects: tuple[CObject, ...]
+    objects: Each[CObject]
     config: tuple[tuple[str, str], ...]
     needs_math: bool
 
@@ -204,17 +204,24 @@ class _Builder:
         return tuple(stored), tuple(descriptors)
 
 
+def _in_group(view: NodeView, builder: _Builder, group: str) -> Each[CObject]:
+    return Each(lambda: (builder.c_object(o) for o in view.objects if o.stored and o.group == group))
+
+
 def context(view: NodeView) -> Context:
+    """What the templates lay out; the objects' C forms are made as the templates read them, not all held."""
     builder = _Builder(view)
-    objects = tuple(builder.c_object(o) for o in view.objects)
-    groups = tuple(Group(g, tuple(o for o in objects if o.group == g and o.stored)) for g in view.groups)
+    objects = Each(lambda: (builder.c_object(o) for o in view.objects), len(view.objects))
+    groups = tuple(Group(g, _in_group(view, builder, g)) for g in view.groups)
+    # Only an object with a REAL entry can have a NAN or INFINITY initializer.
+    real = (builder.c_object(o) for o in view.objects if any(e.data_type.kind is ValueKind.REAL for e in o.entries))
     p = view.name
     present = {o.index for o in view.objects}
     counts = dict(view.counts)
     config = [(f"CNT_{label}", f"{p}_CNT_{label}" if label in counts else "0") for label in CONFIG_COUNTS]
     config += [(f"CNT_ARR_{i:04X}", f"{p}_CNT_ARR_{i:04X}" if _is_array(view, i) else "0") for i in CONFIG_ARRAYS]
     config += [(f"ENTRY_H{i:04X}", f"{p}_ENTRY_H{i:04X}" if i in present else "NULL") for i in CONFIG_ENTRIES]
-    needs_math = any("NAN" in s.init or "INFINITY" in s.init for o in objects for s in o.stored)
+    needs_math = any("NAN" in s.init or "INFINITY" in s.init for o in real for s in o.stored)
     return Context(
         name=p,
         guard=f"{p.upper()}_H",

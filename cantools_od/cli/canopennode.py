@@ -45,6 +45,6 @@ def prepare_canopennode(device: Device, file: str, explain: bool) -> list[str]:
     if explain:
         for line in applied:
             click.echo(f"{file}: set: {line}", err=True)
-        for inference in build_node_view(device).inferences:
+        for inference in build_node_view(device, explain=True).inferences:
             click.echo(f"{file}: inferred: {inference.format()}", err=True)
     return [str(path)] if path is not None else []

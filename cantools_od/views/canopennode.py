@@ -27,8 +27,10 @@ terminator; 24/40/48/56-bit integers and TIME types are byte arrays in CANopen b
 
 from __future__ import annotations
 
+import functools
 import re
 import struct
+import sys
 import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -55,7 +57,7 @@ _KINDS = {ObjectKind.VAR: VAR, ObjectKind.DOMAIN: VAR, ObjectKind.ARRAY: ARR, Ob
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Attributes:
     """The ODA_* bits of one entry, by meaning."""
 
@@ -66,7 +68,7 @@ class Attributes:
     string: bool  # ODA_STR: a shorter value may be written (VISIBLE_STRING, UNICODE_STRING)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class NodeEntry:
     """One sub-entry: the VAR itself, an ARRAY element or a RECORD member."""
 
@@ -85,7 +87,7 @@ class NodeEntry:
         return self.data_type.kind in (ValueKind.STRING, ValueKind.UNICODE)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class NodeObject:
     index: int
     name: str
@@ -105,7 +107,7 @@ class NodeObject:
         return self.entries[1:]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Inference:
     where: str  # "1000h", "1400sub1"
     text: str
@@ -160,7 +162,7 @@ def c_name(name: str) -> str:
         last = word[-1]
     if len(out) > 1 and out[1].islower():
         out = out[0].lower() + out[1:]
-    return out
+    return sys.intern(out)  # members repeat from object to object (sub1, highestSub_indexSupported)
 
 
 def _member_names(subs: Sequence[tuple[int, Variable]]) -> dict[int, str]:
@@ -226,19 +228,29 @@ def _attributes(dtype: DataType, var: Variable, info: CanopenNodeInfo | None) ->
         pdo = {AccessType.WO: "R", AccessType.RWW: "R", AccessType.RW: "TR", None: ""}.get(access, "T")
     srdo = {"tx": "T", "rx": "R", "trx": "TR"}.get(info.access_srdo.value if info and info.access_srdo else "", "")
     multibyte = dtype.is_numeric and dtype.bits in (16, 32, 64)
-    return Attributes(sdo, pdo, srdo, multibyte, dtype.kind in (ValueKind.STRING, ValueKind.UNICODE))
+    return _shared_attributes(sdo, pdo, srdo, multibyte, dtype.kind in (ValueKind.STRING, ValueKind.UNICODE))
+
+
+@functools.cache
+def _shared_attributes(sdo: str, pdo: str, srdo: str, multibyte: bool, string: bool) -> Attributes:
+    # A few dozen combinations exist; entries share them instead of one record each.
+    return Attributes(sdo, pdo, srdo, multibyte, string)
 
 
 # --- the view --------------------------------------------------------------------------------
 
 
 class _Builder:
-    def __init__(self, device: Device) -> None:
+    def __init__(self, device: Device, explain: bool) -> None:
         self.device = device
+        self.explain = explain
         self.inferences: list[Inference] = []
+        self.defaults: dict[bytes, bytes] = {}  # equal initial values, mostly zeros, held once
 
     def note(self, where: str, text: str) -> None:
-        self.inferences.append(Inference(where, text))
+        # Only --explain reads them; a note per object would be a large part of a large file's view.
+        if self.explain:
+            self.inferences.append(Inference(where, text))
 
     def entry(self, obj: Object, subindex: int, var: Variable, member: str, length: int | None = None) -> NodeEntry:
         dtype = self.device.entry_type(var, obj)
@@ -258,6 +270,7 @@ class _Builder:
         if not stored and dtype.index != DOMAIN.index:
             self.note(where, "no default value: no memory in the OD, the application provides it (OD_extension_init)")
         default = held if held is not None else bytes(size)
+        default = self.defaults.setdefault(default, default)
         return NodeEntry(subindex, var.name, member, dtype, _attributes(dtype, var, info), size, stored, default)
 
     def settings(self, obj: Object) -> tuple[str, str | None]:
@@ -297,9 +310,10 @@ def generated_objects(device: Device) -> list[Object]:
     ]
 
 
-def build_node_view(device: Device, name: str = "OD", source: str = "") -> NodeView:
-    """The CANopenNode view of a device the canopennode lint profile accepts."""
-    builder = _Builder(device)
+def build_node_view(device: Device, name: str = "OD", source: str = "", explain: bool = False) -> NodeView:
+    """The CANopenNode view of a device the canopennode lint profile accepts; with `explain`, the
+    settings that were inferred rather than given are listed in its `inferences`."""
+    builder = _Builder(device, explain)
     objects = tuple(builder.build(obj) for obj in generated_objects(device))
     # Only one array element length is noted per object, and each entry once.
     inferences = tuple(dict.fromkeys(builder.inferences))

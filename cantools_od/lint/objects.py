@@ -46,6 +46,14 @@ def _forbidden(obj: Object, sub: bool) -> tuple[str, ...]:
     return ()
 
 
+# Sub-objects 0 and 1 of the RECORD "Pair" (2000h) that several examples below show.
+_PAIR_SUBS = (
+    "[2000sub0]\nParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+    "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
+    "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+)
+
+
 @rule(
     "EDS020",
     E,
@@ -82,18 +90,8 @@ Error, as a rule: a tool may take the key at its word (sub-objects on a VAR, a m
 Warning where the value says what the object type already says: `SubNumber=0` on a VAR or a
 sub-object, `PDOMapping=0` on a DOMAIN (CANopenNode's editors write both); every tool reads them
 as if they were absent.""",
-    (
-        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n[2000sub0]\n"
-        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
-        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
-        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
-    ),
-    fixed=(
-        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
-        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
-        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
-        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
-    ),
+    "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n" + _PAIR_SUBS,
+    fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     fix_safety="No automatic fix: delete the key.",
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
@@ -129,18 +127,8 @@ def _written(var: Variable, key: str, sub: bool) -> bool:
 SubNumber counts the sub-objects an ARRAY, RECORD or DEFSTRUCT implements, sub-index 0 included
 (and FFh excluded); each needs a `[<index>sub<n>]` section. A wrong count makes tools allocate
 the wrong number of entries or reject the file.""",
-    (
-        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
-        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
-        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
-        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
-    ),
-    fixed=(
-        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
-        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
-        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
-        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
-    ),
+    "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n" + _PAIR_SUBS,
+    fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
 )
 def sub_number(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -241,12 +229,7 @@ with another type, they reject the object or read the wrong count.""",
         "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
-    fixed=(
-        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
-        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
-        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
-        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
-    ),
+    fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
 )
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -331,12 +314,7 @@ SubNumber and is never described in an EDS.""",
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000subFF]\nParameterName=Structure\n"
         "ObjectType=0x7\nDataType=0x0007\nAccessType=ro\nDefaultValue=0\nPDOMapping=0"
     ),
-    fixed=(
-        "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n[2000sub0]\n"
-        "ParameterName=Highest sub-index supported\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
-        "DefaultValue=1\nPDOMapping=0\n\n[2000sub1]\nParameterName=First\nObjectType=0x7\nDataType=0x0006\n"
-        "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
-    ),
+    fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
 )
 def sub_ff(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):

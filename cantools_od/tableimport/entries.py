@@ -87,7 +87,7 @@ class ReadResult:
     vendor_name: str | None = None
     product_name: str | None = None
     excluded: dict[int, Cell] = field(default_factory=dict)  # objects the manual says to leave out of an EDS
-    _said: set[tuple[str, str, int]] = field(default_factory=set, repr=False)
+    _said: set[tuple[str, str, int]] = field(default_factory=set, init=False, repr=False, compare=False)
 
     def warn(self, code: str, message: str, line: int, severity: Severity = Severity.WARNING) -> None:
         # A manual's block becomes several entries (the object's fields, the sub-object's): what one of

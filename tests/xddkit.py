@@ -25,6 +25,20 @@ def xdd_params() -> list[object]:
     return file_params(xdd_files(), "../shared is absent")
 
 
+def shared_xml_files() -> list[Path]:
+    """Every XDD/XDC/XPD anywhere in ../shared: corpus, both sides of the history pairs, third_party."""
+    if not SHARED.is_dir():
+        return []
+    return sorted(p for p in SHARED.rglob("*") if p.suffix.lower() in (".xdd", ".xdc", ".xpd") and p.is_file())
+
+
+def shared_xml_params() -> list[object]:
+    files = shared_xml_files()
+    if not files:
+        return file_params([], "../shared is absent")
+    return [pytest.param(path, id=str(path.relative_to(SHARED))) for path in files]
+
+
 def shared_file(path: Path) -> Path:
     if not path.is_file():
         pytest.skip(f"{path} is absent")

@@ -67,11 +67,20 @@ def dumps_xml(device: Device, xdc: bool = False, preserve: bool = True) -> bytes
     original = device._original
     if original is not None and refused(device):
         return original  # not read as a device description: never replaced by what little was read
-    if preserve and original is not None and device.file_format == "xdd" and xdc == device.is_dcf:
+    if preserve and original is not None and device.file_format == "xdd" and _same_kind(device, xdc):
         kept = _preserve(device, original)
         if kept is not None:
             return kept
     return canonical_xml(device, xdc).encode("utf-8")
+
+
+def _same_kind(device: Device, xdc: bool) -> bool:
+    """Whether the bytes read can stand for the file asked for: an XDC for a configured device, an XDD
+    for a description; an .xdd file stating a commissioning (as CANopenEditor writes them) is read as
+    configured and is still the XDD it was."""
+    if xdc == device.is_dcf:
+        return True
+    return not xdc and not device.source.lower().endswith(".xdc")
 
 
 def _preserve(device: Device, original: bytes) -> bytes | None:

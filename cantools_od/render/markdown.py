@@ -17,7 +17,8 @@ import unicodedata
 from collections.abc import Iterable
 from pathlib import Path
 
-from ..model import DataType, Device, NodeIdExpr, Object, RawValue, TimeValue, ValueKind, Variable
+from ..model import DataType, Device, NodeIdExpr, Object, ObjectKind, RawValue, TimeValue, ValueKind, Variable
+from ..model.datatypes import standard_type
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
 from . import Each, stream_template, whole
 from .escape import markdown_cell, markdown_plain, markdown_text
@@ -62,6 +63,24 @@ def _source(view: DeviceView) -> str:
     return view.source_name or f"{view.name}.eds"
 
 
+TYPE_KINDS = (ObjectKind.NULL, ObjectKind.DEFTYPE)
+"""The objects the code views leave out (they define types, hold no data): listed in their own table."""
+
+
+def _type_row(view: DeviceView, obj: Object) -> list[str]:
+    """Index, name, kind, the type of its value, the value (for a DEFTYPE: the type's size in bits), source."""
+    known = standard_type(obj.data_type)
+    type_name = known.name if known is not None else NONE
+    if known is None and obj.data_type is not None:
+        type_name = f"0x{obj.data_type:04X} (unknown)"
+    value = NONE if obj.default is None else _number(obj.default, known)
+    if obj.kind is ObjectKind.DEFTYPE and isinstance(obj.default, int):
+        value = f"{obj.default} bits"
+    where = f"{_source(view)}:{obj.origin.line}" if obj.origin is not None and obj.origin.line else ""
+    name = markdown_cell(obj.name) or NONE
+    return [f"{obj.index:04X}h", name, obj.kind.name, type_name, value, markdown_text(where) or NONE]
+
+
 def _document(view: DeviceView) -> dict[str, object]:
     device = view.device
     mapped = _mapped(view)
@@ -72,6 +91,7 @@ def _document(view: DeviceView) -> dict[str, object]:
         "summary": _summary(view),
         "pdos": [_pdo(pdo, anchors) for pdo in view.pdos],
         "pdo_rows": [_pdo_row(pdo, anchors) for pdo in view.pdos],
+        "types": [_type_row(view, obj) for obj in view.device.objects.values() if obj.kind in TYPE_KINDS],
         # One object at a time, as the template reads them: a large device's rows are not all held.
         "object_rows": Each(lambda: (_object_row(view, obj, mapped, anchors) for obj in view.objects)),
         "objects": Each(lambda: (_object(view, obj, mapped) for obj in view.objects)),

@@ -200,3 +200,29 @@ def test_escaped_text_renders_literally(text: str) -> None:
     assert tables(tokens) == [[["a", "b"], [shown or "\u2014", "x"]]]
     paragraph = next(t for t in tokens if t.type == "inline" and t.content.startswith("Say"))
     assert plain(paragraph.children or []) == f"Say {shown} now." if shown else "Say  now."
+
+
+def _type_definitions_eds() -> str:
+    deftype = "[0041]\nParameterName=Motor parameters\nObjectType=0x5\nDataType=0x0007\nAccessType=const\n"
+    deftype += "DefaultValue=2048\nPDOMapping=0"
+    member = "\nObjectType=0x7\nDataType={}\nAccessType=const\nDefaultValue={}"
+    defstruct = [
+        "[0042]\nParameterName=Pair type\nObjectType=0x6\nSubNumber=3",
+        "[0042sub0]\nParameterName=Number of entries" + member.format("0x0005", "2"),
+        "[0042sub1]\nParameterName=First" + member.format("0x0006", "0x0007"),
+        "[0042sub2]\nParameterName=Second" + member.format("0x0006", "0x0006"),
+    ]
+    objects = ["[MandatoryObjects]\nSupportedObjects=1\n1=0x1000", var(0x1000, "Device type", 0x0007, "ro")]
+    return eds_text([*objects, "[OptionalObjects]\nSupportedObjects=2\n1=0x0041\n2=0x0042", deftype, *defstruct])
+
+
+def test_type_definitions_are_in_the_reference(tmp_path: Path) -> None:
+    """Objects 0040h-005Fh that define types (DEFTYPE, DEFSTRUCT) are named in the document like any other."""
+    path = tmp_path / "types.eds"
+    path.write_text(_type_definitions_eds(), encoding="ascii")
+    text = generate(path, "markdown", "types")
+    check_markdown(text)
+    found = {row[0]: row for table in tables(markdown_tokens(text)) for row in table[1:]}
+    assert found["0041h"][1:5] == ["Motor parameters", "DEFTYPE", "UNSIGNED32", "2048 bits"]
+    assert "### Object 0042h: Pair type" in text
+    assert "[Type definitions](#type-definitions)" in text and "Type definitions" in headings(markdown_tokens(text))

@@ -1,7 +1,7 @@
 """Every real file of ../shared/eds-corpus through `cantools-od gen -t python -t markdown --keep-going`, in-process:
 an importable module whose `object_dictionary()` equals `to_canopen` of what errors did not leave out, and a valid
-Markdown document naming every object generated; or, for a file that is no device description, a refusal with
-exit code 2 (EDS000). Never a traceback."""
+Markdown document naming every object (type definitions included); or, for a file that is no device description,
+a refusal with exit code 2 (EDS000). Never a traceback."""
 
 from __future__ import annotations
 
@@ -62,6 +62,9 @@ def _sweep(path: Path, folder: Path, parse: bool) -> str:
         heading = f"### Object {index:04X}h: {shown}\n" if shown else f"### Object {index:04X}h\n"
         assert f"\n{heading}" in text and f"](#object-{index:04x}h" in text
         assert hasattr(module, f"INDEX_{module_identifier(module, index)}")
+    types = text.partition("\n## Type definitions\n")[2]
+    for index in device.objects.keys() - indices:  # NULL and DEFTYPE objects: in the table of type definitions
+        assert f"\n| {index:04X}h | " in types, f"{index:04X}h is not in the Markdown reference"
     return "generated in part" if device is not whole else "generated"
 
 

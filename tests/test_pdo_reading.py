@@ -65,8 +65,11 @@ CASES = {
     "dummy-not-enabled": Case(
         (*rpdo("0x00060010", "0x62000008"), U8_OUT), ((0x0006, 0, 0, 16), (0x6200, 0, 16, 8)), ("PDO062",), dummies=""
     ),
-    "dummy-of-wrong-length": Case(
-        (*rpdo("0x00050010", "0x62000008"), U8_OUT), ((0x0005, 0, 0, 16), (0x6200, 0, 16, 8)), ("PDO045",)
+    "dummy-of-wrong-length": Case(  # a device refuses it (PDO045), so gen does too
+        (*rpdo("0x00050010", "0x62000008"), U8_OUT), ((0x0005, 0, 0, 16), (0x6200, 0, 16, 8)), ("PDO045",), True
+    ),
+    "dummy-with-a-sub-index": Case(  # CiA 301 7.4.7.1: a data type is mapped at sub-index 0 (PDO050)
+        (*rpdo("0x00050108", "0x62000008"), U8_OUT), ((0x0005, 1, 0, 8), (0x6200, 0, 8, 8)), ("PDO050",), True
     ),
     "missing-object": Case(
         (*rpdo("0x21000010", "0x62000008"), U8_OUT), ((0x2100, 0, 0, 16), (0x6200, 0, 16, 8)), ("PDO042",), True

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 
 from ..model import AccessType, ObjectKind, Severity
-from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry, Pdo, dummy_type
+from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry, Pdo, dummy_shape_problem, dummy_type
 from ..model.cia301.slots import Slot
 from ..model.datatypes import BOOLEAN
 from . import examples as ex
@@ -448,25 +448,19 @@ def check_shared_rpdo_objects(ctx: Context) -> Iterator[Finding]:
     "Dummy entry that names no fixed-size data type",
     """
 An entry with an index below 1000h is a dummy: it names a data type (0001h-001Bh, or a DEFTYPE)
-whose bits the receiver skips. Its sub-index is 0 and its type has a fixed size; strings,
-DOMAIN, record types and undefined indices cannot be dummies.""",
+whose bits the receiver skips. CiA 301 (7.4.7.1) lets the data-type entries be mapped for this,
+and a data-type entry is a single value at sub-index 0: a dummy names sub-index 0 (0x00050008,
+never 0x00050108) and a type of fixed size; strings, DOMAIN, record types and undefined indices
+cannot be dummies. `gen` refuses the same entries (GEN001), so a mapping lint rejects is never
+turned into code.""",
     ex.pdo("rx", "0x00090008"),
     fixed=ex.pdo("rx", "0x00050008"),
 )
 def check_dummy_shape(ctx: Context) -> Iterator[Finding]:
     for pdo, entry in dummies(ctx):
-        if dummy_type(ctx.device, entry.index) is None:
-            yield ctx.report(
-                "PDO050",
-                f"{pdo.name}: dummy entry 0x{entry.raw:08X} names {entry.index:04X}h, not a fixed-size data type",
-                entry.slot.location(ctx),
-            )
-        elif entry.subindex != 0:
-            yield ctx.report(
-                "PDO050",
-                f"{pdo.name}: dummy entry 0x{entry.raw:08X} has sub-index {entry.subindex}, expected 0",
-                entry.slot.location(ctx),
-            )
+        problem = dummy_shape_problem(dummy_type(ctx.device, entry.index), entry.index, entry.subindex)
+        if problem:
+            yield ctx.report("PDO050", f"{pdo.name}: dummy entry 0x{entry.raw:08X} {problem}", entry.slot.location(ctx))
 
 
 @rule(

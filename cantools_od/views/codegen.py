@@ -28,8 +28,8 @@ from ..model import (
     ValueKind,
     Variable,
 )
-from ..model.cia301.pdo import CLASSIC_CAN_BITS
-from .pdo import Pdo, pdo_map
+from ..model.cia301.pdo import CLASSIC_CAN_BITS, dummy_length_fits, dummy_shape_problem
+from .pdo import Pdo, PdoEntry, pdo_map
 
 
 @dataclass(frozen=True, slots=True)
@@ -239,7 +239,10 @@ def build_view(
         view_entries = []
         for mapped in pdo.entries:
             target = None if mapped.is_dummy else _find(by_index.get(mapped.index), mapped.subindex)
-            problem = _pdo_problem(pdo, mapped.index, mapped.subindex, mapped.bit_length, target, mapped.is_dummy)
+            if mapped.is_dummy:
+                problem = _dummy_problem(pdo, mapped)
+            else:
+                problem = _pdo_problem(pdo, mapped.index, mapped.subindex, mapped.bit_length, target)
             if problem:
                 problems.append(_diagnostic(device, pdo, problem))
                 failed.add(pdo.name)
@@ -266,10 +269,20 @@ def _find(obj: ObjectView | None, subindex: int) -> EntryView | None:
     return next((e for e in obj.entries if e.subindex == subindex), None)
 
 
-def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryView | None, dummy: bool) -> str:
+def _dummy_problem(pdo: Pdo, mapped: PdoEntry) -> str:
+    """What lint reports as PDO050/PDO045 of a dummy entry: the generated layout would not be the device's."""
+    dtype = mapped.data_type
+    where = f"{pdo.name}: dummy entry {mapped.index:04X}sub{mapped.subindex:X}"
+    problem = dummy_shape_problem(dtype, mapped.index, mapped.subindex)
+    if problem:
+        return f"{where} {problem}"
+    if dtype is not None and not dummy_length_fits(dtype, mapped.bit_length):
+        return f"{where} maps {mapped.bit_length} bits, but {dtype.name} has {dtype.bits}"
+    return ""
+
+
+def _pdo_problem(pdo: Pdo, index: int, subindex: int, bits: int, entry: EntryView | None) -> str:
     where = f"{pdo.name} maps {index:04X}sub{subindex:X}"
-    if dummy:
-        return "" if 0 < bits <= 64 else f"{where} with {bits} bits"
     if entry is None:
         return f"{where}, which does not exist"
     if not entry.is_scalar or entry.bits is None:

@@ -224,3 +224,21 @@ def dummy_type(device: Device, index: int) -> DataType | None:
         if alias is not None and alias.kind is ObjectKind.DEFTYPE:
             dtype = standard_type(alias.data_type)
     return dtype if dtype is not None and dtype.bits is not None else None
+
+
+def dummy_shape_problem(dtype: DataType | None, index: int, subindex: int) -> str:
+    """Why a dummy entry names no data type it may map, '' when it does.
+
+    CiA 301 (7.4.7.1) lets the data-type entries be mapped into an RPDO to mark bits the device does
+    not use; a data-type definition is one entry at sub-index 0 whose type has a fixed size, so a dummy
+    names that index with sub-index 0 (0x00050008), never another sub-index (0x00050108)."""
+    if dtype is None:
+        return f"names {index:04X}h, not a fixed-size data type"
+    if subindex != 0:
+        return f"has sub-index {subindex}, expected 0"
+    return ""
+
+
+def dummy_length_fits(dtype: DataType, bits: int) -> bool:
+    """The entry's length is the type's size (a BOOLEAN also as the byte CANopenNode stores it in)."""
+    return bits == dtype.bits or (dtype.index == BOOLEAN.index and bits == 8)

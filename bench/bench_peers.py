@@ -1,5 +1,6 @@
 """Peer-reader matrix: how python-canopen and lely's dcfchk read what `fmt`, `convert` (EDS -> DCF) and
-`lint --fix` write, against how they read the original; and how many lines `fmt` changes per radix style.
+`lint --fix` write, against how they read the original (the corpus, then probes of REAL values written as
+bit patterns and as decimals); and how many lines `fmt` changes per radix style.
 
 Run with `PYTHONPATH=. python bench/bench_peers.py [CORPUS_DIR] [--json]`. See bench/README.md.
 """
@@ -17,7 +18,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
-from peermatrix import judge_all, table, tally
+from peermatrix import judge_all, real_probes, table, tally
 
 from cantools_od.api import dumps, format_for, load
 from cantools_od.eds.format import IntStyle, Radix
@@ -55,15 +56,21 @@ def main() -> int:
     files = sorted(p for p in args.corpus.iterdir() if p.suffix.lower() in (".eds", ".dcf"))
     start = time.perf_counter()
     with tempfile.TemporaryDirectory() as folder:
-        results = judge_all(files, Path(folder), full=True)
+        results = judge_all(files, Path(folder) / "corpus", full=True)
+        probes = real_probes(Path(folder) / "real")
+        real_rows = tally(judge_all(probes, Path(folder) / "judged", full=True))
     matrix_seconds = time.perf_counter() - start
     rows = tally(results)
     changes = fmt_changes(files)
     if args.json:
-        print(json.dumps({"matrix": [dataclasses.asdict(r) for r in rows], "fmt": changes}, indent=2))
+        matrix = [dataclasses.asdict(r) for r in rows]
+        real = [dataclasses.asdict(r) for r in real_rows]
+        print(json.dumps({"matrix": matrix, "real": real, "fmt": changes}, indent=2))
         return 0
     print(f"peer-reader matrix over {len(files)} files ({matrix_seconds:.1f} s)\n")
     print(table(rows))
+    print(f"\nREAL32/REAL64 values as bit patterns and decimals ({len(probes)} probe files)\n")
+    print(table(real_rows))
     print("\nfmt per integer-radix style")
     for radix, counts in changes.items():
         print(f"  {radix:<11} {counts['files changed']:>3} files changed, {counts['diff lines']:>6} diff lines")

@@ -365,6 +365,42 @@ def table(rows: list[PeerCounts]) -> str:
     return "\n".join(lines)
 
 
+# --- REAL values: each spelling an author uses, as a probe file the matrix judges like a real one ----------------
+
+# (probe name, data type, entries). python-canopen reads REAL defaults with float() and REAL limits with int();
+# lely reads every REAL as an integer, the IEEE bit pattern. A bit pattern and a decimal must each keep the
+# reading both peers gave the original.
+REAL_PROBES = (
+    ("real32-pattern-limits", "0x0008", "LowLimit=0x0\nHighLimit=0xFFFF\nDefaultValue=0x0\nPDOMapping=0"),
+    ("real32-pattern-default", "0x0008", "LowLimit=0x00000000\nHighLimit=0x7F7FFFFF\nDefaultValue=0x3F800000"),
+    ("real32-pattern-nan", "0x0008", "DefaultValue=0x7FC00000\nPDOMapping=0"),
+    ("real64-pattern", "0x0011", "LowLimit=0x0\nHighLimit=0x7FEFFFFFFFFFFFFF\nDefaultValue=0x400921FB54442D18"),
+    ("real64-pattern-limit", "0x0011", "HighLimit=0xFFFFFFFF\nDefaultValue=0\nPDOMapping=0"),
+    ("real32-decimal", "0x0008", "LowLimit=-10.25\nHighLimit=100\nDefaultValue=1.5\nPDOMapping=0"),
+    ("real64-decimal", "0x0011", "LowLimit=-1e3\nHighLimit=1E6\nDefaultValue=3.25\nPDOMapping=0"),
+    ("real32-integral-decimal", "0x0008", "LowLimit=-5\nHighLimit=65535\nDefaultValue=2\nPDOMapping=0"),
+)
+
+
+def probe_file(entries: str, data_type: str) -> str:
+    """lintkit's complete EDS with its object 2000h replaced by a probe of one value kind."""
+    from lintkit import BASE
+
+    probe = f"[2000]\nParameterName=Probe\nObjectType=0x7\nDataType={data_type}\nAccessType=rw\n{entries}\n\n"
+    return BASE[: BASE.index("[2000]")] + probe + BASE[BASE.index("[2001]") :]
+
+
+def real_probes(folder: Path) -> list[Path]:
+    """The REAL probes written into `folder`, one EDS each."""
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for name, data_type, entries in REAL_PROBES:
+        path = folder / f"{name}.eds"
+        path.write_text(probe_file(entries, data_type), encoding="ascii")
+        paths.append(path)
+    return paths
+
+
 def judge_all(files: list[Path], folder: Path, full: bool = True, workers: int | None = None) -> list[FileResult]:
     """`judge` over many files in worker processes (the peers are pure Python and single-threaded)."""
     from concurrent.futures import ProcessPoolExecutor

@@ -8,7 +8,7 @@ wrongly by CiA 306 are listed below, each with why, and there it must read ours 
 from __future__ import annotations
 
 import pytest
-from peermatrix import Difference, FileResult, Judgement, judge_all
+from peermatrix import Difference, FileResult, Judgement, judge, judge_all, real_probes
 
 from support import corpus_devices
 
@@ -91,3 +91,28 @@ def test_python_canopen_reads_every_output_as_the_original(matrix: dict[str, Fil
 
 def _data_type(matrix: dict[str, FileResult], name: str, d: Difference) -> object:
     return matrix[name].data_types.get(d.key)
+
+
+@pytest.fixture(scope="module")
+def real_matrix(tmp_path_factory: pytest.TempPathFactory) -> list[FileResult]:
+    folder = tmp_path_factory.mktemp("real")
+    return [judge(path, folder / path.stem) for path in real_probes(folder / "probes")]
+
+
+@pytest.mark.parametrize("output", ["fmt", "convert-dcf", "lint-fix"])
+def test_real_values_read_alike_in_every_output(real_matrix: list[FileResult], output: str) -> None:
+    """REAL32/REAL64 defaults and limits written as IEEE bit patterns (HighLimit=0xFFFF) and as decimals: both
+    peers read every output as they read the original (python-canopen reads such a limit as the integer 65535,
+    lely as the pattern), and dcfchk accepts every output of a probe it accepted."""
+    accepted = 0
+    for result in real_matrix:
+        for (out, peer), j in result.judgements.items():
+            if out != output:
+                continue
+            if peer == "dcfchk":
+                accepted += j.before is None
+                assert j.before is not None or j.after is None, f"{result.name}: dcfchk: {j.after}"
+                continue
+            assert (j.before, j.after) == (None, None), f"{result.name} ({peer}): {j.before} / {j.after}"
+            assert [str(d) for d in j.differences] == [], f"{result.name} ({peer})"
+    assert accepted >= 3, "dcfchk accepted too few probes for the check to prove anything"

@@ -6,16 +6,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from lintkit import BASE
-from peermatrix import NODE_ID, canopen_reading, dcfchk_verdict, differences
+from peermatrix import NODE_ID, canopen_reading, dcfchk_verdict, differences, probe_file
 
 from cantools_od import dumps, loads
 
-
-def device_file(entries: str, data_type: str) -> str:
-    """lintkit's complete EDS with its object 2000h replaced by a probe of one value kind."""
-    probe = f"[2000]\nParameterName=Probe\nObjectType=0x7\nDataType={data_type}\nAccessType=rw\n{entries}\n\n"
-    return BASE[: BASE.index("[2000]")] + probe + BASE[BASE.index("[2001]") :]
+device_file = probe_file
 
 
 # (case id, data type, the entries as an author wrote them). Each is a value kind whose canonical spelling once

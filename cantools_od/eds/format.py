@@ -7,6 +7,7 @@ is the text the entry had in the file it was read from, when there was one.
 
 from __future__ import annotations
 
+import math
 import re
 import struct
 from collections.abc import Mapping
@@ -155,9 +156,24 @@ def _real(value: float, dtype: DataType | None, dialect: Dialect, hint: str | No
         return format_real(value, bits, as_bits=True)
     if hint is not None and _DEC_TEXT.match(hint) and _as_real(int(hint), bits) == value:
         return str(int(hint))  # e.g. 2147483647 for REAL32: python-canopen reads REAL limits with int()
+    pattern = _bit_pattern(hint, value, bits)
+    if pattern is not None:  # HighLimit=0xFFFF: lely reads the pattern, python-canopen its integer, as before
+        return f"0x{pattern:0{bits // 4}X}"
     if value == 0:
         return "0"
     return format_real(value, bits, as_bits=False)
+
+
+def _bit_pattern(hint: str | None, value: float, bits: int) -> int | None:
+    """The IEEE bit pattern the author wrote for `value` (a hex integer), None when the text was not one."""
+    found = _HEX_TEXT.fullmatch(hint.strip()) if hint is not None else None
+    if found is None or "-" in found.group(0):
+        return None
+    pattern = int(found.group(1), 16)
+    if pattern >= 1 << bits:
+        return None
+    read = struct.unpack("<f" if bits == 32 else "<d", pattern.to_bytes(bits // 8, "little"))[0]
+    return pattern if read == value or (math.isnan(read) and math.isnan(value)) else None
 
 
 def _as_real(number: int, bits: int) -> float | None:

@@ -75,10 +75,9 @@ def command(file: str, fmt: str, node_id: int | None, pin_file: str | None) -> N
                 f"  {p.bit_length} bits"
             )
             for e in p.entries:
-                what = e.identifier or f"dummy {e.data_type_name}"
                 click.echo(
                     f"  {e.index:04X}sub{e.subindex:X}  bits {e.bit_offset:>3}-{e.bit_offset + e.bit_length - 1:<3}"
-                    f"  {e.data_type_name:<14} {what}"
+                    f"  {e.data_type_name:<14} {e.label}"
                 )
             if p.entries:
                 click.echo(draw(p))

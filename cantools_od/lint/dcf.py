@@ -6,6 +6,7 @@ import re
 from collections.abc import Iterator
 
 from ..model import Device, Object, RawSection, Severity, Variable
+from ..model.cia301.modules import has_module_section, object_section_name
 from ..model.datatypes import DOMAIN
 from . import examples as ex
 from .common import explicit_vars, file_start, given, invalid, where
@@ -182,7 +183,8 @@ def _listed(raw: RawSection) -> dict[str, str]:
 In the module concept (CiA 306 §6) [SupportedModules] NrOfEntries counts the modules
 M1..Mn, each with an [M<x>ModuleInfo]; [M<x>FixedObjects] and [M<x>SubExtends] count their
 numbered entries in NrOfEntries, and each listed index has its [M<x>Fixed<index>] or
-[M<x>SubExt<index>] section; [ConnectedModules] lists module numbers 1..n.""",
+[M<x>SubExt<index>] section (the index in hex without leading zeros, as for `[M3SubExtA0]`;
+one written with them is accepted); [ConnectedModules] lists module numbers 1..n.""",
     "; also: DIA012 (any module section)\n[SupportedModules]\nNrOfEntries=2\n\n[M1ModuleInfo]\n"
     "ProductName=Input module",
     fixed="; also: DIA012 (any module section)\n[SupportedModules]\nNrOfEntries=1\n\n[M1ModuleInfo]\n"
@@ -203,7 +205,7 @@ def modules(ctx: Context) -> Iterator[Finding]:
         if total is not None and number > total:
             yield ctx.report("EDS070", f"[{raw.name}]: module {number} but NrOfEntries={total}", ctx.at(raw))
         if part in ("fixedobjects", "subextends") and not match.group(3):
-            yield from _module_list(ctx, raw, number, "Fixed" if part == "fixedobjects" else "SubExt", sections)
+            yield from _module_list(ctx, raw, number, "Fixed" if part == "fixedobjects" else "SubExt")
     if supported is not None and total is not None:
         for number in sorted(set(range(1, total + 1)) - infos):
             yield ctx.report("EDS070", f"module {number}: no [M{number}ModuleInfo]", ctx.at(supported))
@@ -226,9 +228,7 @@ def _counted(ctx: Context, raw: RawSection) -> Iterator[Finding]:
         yield ctx.report("EDS070", message, ctx.at(raw, "NrOfEntries"))
 
 
-def _module_list(
-    ctx: Context, raw: RawSection, number: int, prefix: str, sections: dict[str, RawSection]
-) -> Iterator[Finding]:
+def _module_list(ctx: Context, raw: RawSection, number: int, prefix: str) -> Iterator[Finding]:
     yield from _counted(ctx, raw)
     for key, text in _listed(raw).items():
         try:
@@ -236,6 +236,6 @@ def _module_list(
         except ValueError:
             yield ctx.report("EDS070", f"[{raw.name}] {key}={text}: not an object index", ctx.at(raw, key))
             continue
-        if f"m{number}{prefix}{index:04x}".lower() not in sections:
-            message = f"[{raw.name}] {key}=0x{index:04X}: no [M{number}{prefix}{index:04X}] section"
+        if not has_module_section(ctx.device, number, prefix, index):  # CiA 306 spells [M3SubExtA0]
+            message = f"[{raw.name}] {key}=0x{index:04X}: no [{object_section_name(number, prefix, index)}] section"
             yield ctx.report("EDS070", message, ctx.at(raw, key))

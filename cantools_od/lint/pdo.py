@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 
 from ..model import AccessType, ObjectKind, Severity
+from ..model.cia301.modules import connected_modules, module_objects, supports_modules
 from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry, Pdo, dummy_shape_problem, dummy_type
 from ..model.cia301.slots import Slot
 from ..model.datatypes import BOOLEAN
@@ -197,16 +198,33 @@ def check_holes(ctx: Context) -> Iterator[Finding]:
     "Mapped object does not exist",
     """
 A mapping entry names an index and sub-index of the object dictionary. When the device has no
-such object, downloading the mapping fails (abort 0602 0000h) and the PDO cannot be built.""",
+such object, downloading the mapping fails (abort 0602 0000h) and the PDO cannot be built.
+
+A modular device (CiA 306 section 6, [SupportedModules]) is the exception: its default mappings
+may name objects that only its modules create ([M<x>FixedObjects], [M<x>SubExtends]), which is
+no error. In a DCF that lists its [ConnectedModules], a mapping is valid up to the first object
+neither the device nor a connected module creates: that entry is a warning (the device shortens
+the mapping there), the entries after it are not checked.""",
     ex.pdo("rx", "0x21000010"),
     fixed=ex.pdo("rx", "0x21000010") + ex.var(0x2100, "Setpoint", 0x0006, "rw"),
 )
 def check_exists(ctx: Context) -> Iterator[Finding]:
+    modular = supports_modules(ctx.device)
+    created = module_objects(ctx.device) if modular else {}
+    shortened = modular and connected_modules(ctx.device) is not None
+    cut: set[int] = set()  # the PDOs (by mapping index) a configuration shortens at a missing object
     for pdo, entry, obj, var in mapped_objects(ctx):
-        if var is None and (obj is None or obj.has_subs):  # a VAR with sub-index > 0: PDO052
-            yield ctx.report(
-                "PDO042", f"{pdo.name}: maps {entry.target}, which does not exist", entry.slot.location(ctx)
-            )
+        if var is not None or (obj is not None and not obj.has_subs) or entry.index in created:
+            continue  # present, a VAR with sub-index > 0 (PDO052), or made by a module
+        if pdo.map_index in cut:
+            continue
+        message = f"{pdo.name}: maps {entry.target}, which does not exist"
+        if not shortened:
+            yield ctx.report("PDO042", message, entry.slot.location(ctx))
+            continue
+        cut.add(pdo.map_index)
+        message += ", nor does a connected module create it: the mapping is valid up to here"
+        yield with_severity(ctx.report("PDO042", message, entry.slot.location(ctx)), W)
 
 
 @rule(

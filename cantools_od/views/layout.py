@@ -34,6 +34,6 @@ def draw(pdo: Pdo) -> str:
             msb = entry.bit_offset + entry.bit_length - 1
             if entry.bit_length and msb // 8 == byte:
                 column = 7 - msb % 8
-                label = entry.identifier or f"(dummy {entry.data_type_name})"
+                label = entry.identifier or f"({entry.label})"
                 lines.append(" " * (7 + 4 * column) + f"+-- {label}")
     return "\n".join(lines)

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 from ..identifiers import Identifiers, assign
 from ..model import DataType, Device, NodeIdExpr
+from ..model.cia301.modules import ModuleObject, module_objects
 from ..model.cia301.pdo import MapEntry, count_invalid, dummy_type, is_dummy_index, pdos
 
 
@@ -19,6 +20,7 @@ class PdoEntry:
     data_type: DataType | None
     identifier: str | None  # the flat identifier; None for a dummy entry
     exists: bool  # the mapped object (or dummy type) is known
+    module: int | None = None  # the module that creates the mapped object (CiA 306 section 6), if one does
 
     @property
     def is_dummy(self) -> bool:
@@ -27,6 +29,17 @@ class PdoEntry:
     @property
     def data_type_name(self) -> str:
         return self.data_type.name if self.data_type is not None else "UNKNOWN"
+
+    @property
+    def label(self) -> str:
+        """What the entry carries, in words: its identifier, a dummy's type, a module's object, or none."""
+        if self.identifier:
+            return self.identifier
+        if self.is_dummy:
+            return f"dummy {self.data_type_name}"
+        if self.module is not None:
+            return f"{self.name or 'object'} (module {self.module})"
+        return "missing object"
 
 
 @dataclass(frozen=True)
@@ -59,6 +72,7 @@ def pdo_map(device: Device, node_id: int | None = None, identifiers: Identifiers
     ids = identifiers or assign(device)
     nid = node_id if node_id is not None else device.node_id
     found: list[Pdo] = []
+    made = module_objects(device)
     for pdo in pdos(device):
         cob, transmission = pdo.comm_slot(1), pdo.comm_slot(2)
         transmission_type = transmission.value(nid) if transmission is not None else None
@@ -70,7 +84,7 @@ def pdo_map(device: Device, node_id: int | None = None, identifiers: Identifiers
                 map_index=pdo.map_index,
                 cob_id=_int_or_expr(cob.value(nid) if cob is not None else None),
                 transmission_type=transmission_type if isinstance(transmission_type, int) else None,
-                entries=tuple(_entry(device, entry, ids) for entry in pdo.mapped()),
+                entries=tuple(_entry(device, entry, ids, made) for entry in pdo.mapped()),
                 count=pdo.count,
             )
         )
@@ -83,7 +97,7 @@ def _int_or_expr(value: object) -> int | NodeIdExpr | None:
     return value if isinstance(value, (int, NodeIdExpr)) else None
 
 
-def _entry(device: Device, mapped: MapEntry, ids: Identifiers) -> PdoEntry:
+def _entry(device: Device, mapped: MapEntry, ids: Identifiers, made: dict[int, ModuleObject]) -> PdoEntry:
     index, subindex, offset, bits = mapped.index, mapped.subindex, mapped.offset, mapped.bits
     if mapped.is_dummy:  # a dummy entry names a data type
         dtype = dummy_type(device, index)
@@ -91,6 +105,9 @@ def _entry(device: Device, mapped: MapEntry, ids: Identifiers) -> PdoEntry:
         return PdoEntry(index, subindex, offset, bits, name, dtype, None, dtype is not None)
     obj = device.objects.get(index)
     var = obj.entry(subindex) if obj is not None else None
+    if (obj is None or var is None) and index in made:  # an object a module creates (CiA 306 section 6)
+        module = made[index]
+        return PdoEntry(index, subindex, offset, bits, module.name, module.data_type, None, False, module.module)
     if obj is None or var is None:
         return PdoEntry(index, subindex, offset, bits, "", None, None, False)
     return PdoEntry(

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from ..model import Diagnostic, Severity
 from .build import BuildInfo, build
+from .capacity import Capacity, apply_capacities, read_capacities
 from .entries import ReadResult, loc
 from .facts import expand
 from .manual import TEXT_LAYOUTS, detect_text_layout, read_manual
@@ -75,6 +76,7 @@ def import_tables(
         raise ValueError(f"unknown layout {layout!r}; one of {', '.join(LAYOUTS)}")
     fatal: list[Diagnostic] = []
     reads: list[ReadResult] = []
+    capacities: list[Capacity] = []
     for given in sources:
         path = os.fspath(given)
         try:
@@ -83,6 +85,8 @@ def import_tables(
             fatal.append(_fatal(path, f"cannot read: {error.strerror or error}"))
             continue
         reads.append(read_source(path, data, layout))
+        if reads[-1].layout in TEXT_LAYOUTS:  # a manual's prose may state how many entries it lists
+            capacities += read_capacities(path, read_text(data))
     loaded: Overrides | None = None
     if overrides is not None:
         opath = os.fspath(overrides)
@@ -100,6 +104,7 @@ def import_tables(
         options.policy = policy
     facts, reads = expand(reads)
     merged = merge(facts, options, [r.file for r in reads])
+    apply_capacities(merged, capacities)
     vendor = (loaded.vendor_name if loaded else None) or next((r.vendor_name for r in reads if r.vendor_name), None)
     info = BuildInfo(
         vendor_name=vendor,

@@ -39,6 +39,7 @@ from ..model.cia301.objects import (
 )
 from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
 from ..model.datatypes import DOMAIN
+from .capacity import PROSE_CAPACITY
 from .entries import loc
 from .facts import Norm, Source
 from .merge import Candidate, MergedEntry, MergedObject, MergeResult, Resolved, display
@@ -338,7 +339,10 @@ def _comments(fields: dict[str, Resolved], entry: MergedEntry | None, obj: Merge
         if resolved is None:
             continue
         lines = []
-        if resolved.inferred:
+        source = resolved.source
+        if resolved.inferred and source is not None and source.layout == PROSE_CAPACITY:
+            lines.append(f"; inferred from the capacity stated at {source.short()}")
+        elif resolved.inferred:
             lines.append("; inferred from CiA 301 (no source states it)")
         else:
             where = _from(resolved)

@@ -85,7 +85,8 @@ def render(result: ImportResult) -> str:
     lines += [
         "## Inferred values",
         "",
-        "Not stated by any source; filled in from CiA 301 so that the EDS is well-formed.",
+        "Not stated by any source as a value: filled in from CiA 301 so that the EDS is well-formed, or entries a "
+        "capacity stated in the manual's prose creates (the sentence is quoted).",
         "",
     ]
     if merged.inferred:

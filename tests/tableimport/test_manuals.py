@@ -37,8 +37,9 @@ EXPECTED = {
     "003": (258, 258, 244, 244),
     "004": (193, 193, 165, 165),
 }
-# objects, sub-objects in the EDS of a plain `import-table <manual> -o out.eds`
-SIZES = {"000": (71, 434), "001": (44, 0), "002": (215, 315), "003": (106, 181), "004": (65, 168)}
+# objects, sub-objects in the EDS of a plain `import-table <manual> -o out.eds` (000: with 1600h-1603h sub 2-8,
+# which "Up to 8 objects can be mapped to a single RPDO" states)
+SIZES = {"000": (71, 462), "001": (44, 0), "002": (215, 315), "003": (106, 181), "004": (65, 168)}
 
 
 @pytest.mark.parametrize("prefix", sorted(EXPECTED))

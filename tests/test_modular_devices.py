@@ -179,3 +179,11 @@ def test_module_sections_are_kept_byte_for_byte(tmp_path: Path) -> None:
     for original, written in ((COUPLER_EDS, eds), (dcf_text, dcf), (COUPLER_EDS, tmp_path / "made.dcf")):
         assert _module_sections(written.read_text(encoding="ascii")) == _module_sections(original)
     assert len(_module_sections(dcf_text)) == 14
+
+
+def test_gen_says_which_module_creates_an_object_it_cannot_generate(tmp_path: Path) -> None:
+    _write(tmp_path, "coupler.eds", COUPLER_EDS)
+    result = _run(tmp_path, "gen", "coupler.eds", "-t", "c", "-o", "out")
+    assert result.returncode == 1
+    assert "RPDO1 maps 6200sub1, which does not exist in the device itself (module 2 creates it" in result.stderr
+    assert "[GEN001]" in result.stderr and "Traceback" not in result.stderr

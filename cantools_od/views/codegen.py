@@ -243,6 +243,8 @@ def build_view(
                 problem = _dummy_problem(pdo, mapped)
             else:
                 problem = _pdo_problem(pdo, mapped.index, mapped.subindex, mapped.bit_length, target)
+                if problem and target is None and mapped.module is not None:  # CiA 306 section 6
+                    problem += f" in the device itself (module {mapped.module} creates it; gen makes its own objects)"
             if problem:
                 problems.append(_diagnostic(device, pdo, problem))
                 failed.add(pdo.name)

@@ -139,18 +139,24 @@ def test_eds_mapping_of_an_object_no_module_creates_is_still_an_error(tmp_path: 
 
 
 def test_dcf_mapping_is_valid_up_to_the_first_object_no_connected_module_creates(tmp_path: Path) -> None:
-    """Modules 1 and 3 are connected, module 2 (6200h) is not: RPDO1 is valid up to its first entry."""
+    """Modules 1 and 3 are connected, module 2 (6200h) is not: RPDO1 is valid up to its first entry. One module 1
+    extends 6000h by one sub-index (Count=1), so TPDO1 is valid up to 6000sub2; its 6401sub1 is not checked."""
     _write(tmp_path, "coupler.dcf", COUPLER_EDS + CONNECTED)
     result = _run(tmp_path, "lint", "--select", "PDO,EDS070", "coupler.dcf")
     assert result.returncode == 0, result.stdout
     found = re.findall(r"(warning|error): (.*) \[PDO042\]", result.stdout)
+    tail = ", nor does a connected module create it: the mapping is valid up to here"
     assert found == [
-        (
-            "warning",
-            "RPDO1: maps 6200sub1, which does not exist, nor does a connected module create it: "
-            "the mapping is valid up to here",
-        )
+        ("warning", f"RPDO1: maps 6200sub1, which does not exist{tail}"),
+        ("warning", f"TPDO1: maps 6000sub2, which does not exist{tail}"),
     ]
+    _write(
+        tmp_path,
+        "twice.dcf",
+        COUPLER_EDS + CONNECTED.replace("NrOfEntries=2\n1=1\n2=3", "NrOfEntries=3\n1=1\n2=1\n3=3"),
+    )
+    result = _run(tmp_path, "lint", "--select", "PDO,EDS070", "twice.dcf")
+    assert re.findall(r"maps (\w+), which", result.stdout) == ["6200sub1"]  # two modules 1: 6000sub1 and sub2
 
 
 def test_module_section_names_are_asked_for_without_leading_zeros(tmp_path: Path) -> None:

@@ -214,7 +214,8 @@ def check_exists(ctx: Context) -> Iterator[Finding]:
     shortened = modular and connected_modules(ctx.device) is not None
     cut: set[int] = set()  # the PDOs (by mapping index) a configuration shortens at a missing object
     for pdo, entry, obj, var in mapped_objects(ctx):
-        if var is not None or (obj is not None and not obj.has_subs) or entry.index in created:
+        module = created.get(entry.index)
+        if var is not None or (obj is not None and not obj.has_subs) or (module and module.has(entry.subindex)):
             continue  # present, a VAR with sub-index > 0 (PDO052), or made by a module
         if pdo.map_index in cut:
             continue

@@ -105,7 +105,7 @@ def _entry(device: Device, mapped: MapEntry, ids: Identifiers, made: dict[int, M
         return PdoEntry(index, subindex, offset, bits, name, dtype, None, dtype is not None)
     obj = device.objects.get(index)
     var = obj.entry(subindex) if obj is not None else None
-    if (obj is None or var is None) and index in made:  # an object a module creates (CiA 306 section 6)
+    if (obj is None or var is None) and index in made and made[index].has(subindex):  # CiA 306 section 6
         module = made[index]
         return PdoEntry(index, subindex, offset, bits, module.name, module.data_type, None, False, module.module)
     if obj is None or var is None:

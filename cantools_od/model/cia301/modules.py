@@ -9,6 +9,7 @@ in the model (`Device.module_sections`); this module reads what the PDO checks a
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from dataclasses import dataclass
 
@@ -26,6 +27,11 @@ class ModuleObject:
     module: int
     name: str
     data_type: DataType | None
+    highest: int | None = None  # with [ConnectedModules]: the highest sub-index the connected modules extend
+    # it to ([M<x>SubExt<idx>] Count added per connected module); None where that is not known
+
+    def has(self, subindex: int) -> bool:
+        return self.highest is None or subindex <= self.highest
 
 
 def _value(raw: RawSection, key: str) -> str | None:
@@ -94,4 +100,22 @@ def module_objects(device: Device) -> dict[int, ModuleObject]:
             name = (_value(section, "ParameterName") or "") if section is not None else ""
             dtype = standard_type(_number(_value(section, "DataType"))) if section is not None else None
             found[index] = ModuleObject(index, module, name, dtype)
+    if connected is not None:
+        _count_extensions(device, connected, found)
     return found
+
+
+def _count_extensions(device: Device, connected: list[int], found: dict[int, ModuleObject]) -> None:
+    """Sub-indices of each extended object: the Count of every connected module that extends it, added up.
+    A packed Count (`0;<bits>`, several modules in one sub-index) leaves the object's size unknown."""
+    totals: dict[int, int | None] = {}
+    for module in connected:
+        for index in found:
+            section = _object_section(device, module, "SubExt", index)
+            if section is None:
+                continue
+            count = _number((_value(section, "Count") or "").split(";")[0])
+            before = totals.get(index, 0)
+            totals[index] = None if before is None or not count else before + count
+    for index, total in totals.items():
+        found[index] = dataclasses.replace(found[index], highest=total)

@@ -13,10 +13,11 @@ from ..model import Device
 from .compare import Sides, object_diffs
 from .device import device_changes
 from .pdos import VALUE_KINDS, absorbed, pdo_diffs
-from .records import IMPACT_ORDER, Change, DeviceDiff, Impact, Kind, ObjectDiff, PdoDiff, PdoEntryView, PdoView
+from .records import IMPACT_ORDER, Breaks, Change, DeviceDiff, Impact, Kind, ObjectDiff, PdoDiff, PdoEntryView, PdoView
 
 __all__ = [
     "IMPACT_ORDER",
+    "Breaks",
     "Change",
     "DeviceDiff",
     "Impact",
@@ -81,11 +82,21 @@ def compare(
         kept = [
             change
             for change in obj.changes
-            if not (
+            if _told(change)
+            and not (
                 change.kind in VALUE_KINDS
                 and ((change.index, change.subindex) in shown or (change.index, None) in shown)
             )
         ]
         if kept:
             objects.append(obj.model_copy(update={"changes": kept}))
-    return DeviceDiff(old=old.source, new=new.source, device=list(device_changes(old, new)), objects=objects, pdos=pdos)
+    device = [change for change in device_changes(old, new) if _told(change)]
+    return DeviceDiff(old=old.source, new=new.source, device=device, objects=objects, pdos=pdos)
+
+
+_WHOLE = frozenset({Kind.OBJECT_ADDED, Kind.OBJECT_REMOVED, Kind.SUB_ADDED, Kind.SUB_REMOVED})
+
+
+def _told(change: Change) -> bool:
+    """A change a reader can see: nothing is reported whose old and new text are equal."""
+    return change.kind in _WHOLE or change.old_text != change.new_text

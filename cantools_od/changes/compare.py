@@ -6,6 +6,7 @@ import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
+from ..eds.storage import PREFIX as STORAGE_PREFIX
 from ..identifiers import Identifiers
 from ..model import (
     AccessType,
@@ -21,7 +22,7 @@ from ..model import (
     Variable,
 )
 from . import describe
-from .impact import access_impact, data_type_impact, flag_impact, limit_impact
+from .impact import access_impact, canopennode_impact, data_type_impact, flag_impact, limit_impact, value_impact
 from .records import Change, Impact, Kind, ObjectDiff
 
 
@@ -199,7 +200,16 @@ def _storable(value: object) -> Value | None:
 def _identifier(ids: Identifiers, entry: Entry) -> str:
     if entry.subindex is None:
         return ids.object(entry.owner.index)
-    return ids.member(entry.owner.index, entry.subindex)
+    return _known(ids.member, entry.owner.index, entry.subindex)
+
+
+def _known(lookup: Callable[[int, int], str], index: int, subindex: int) -> str:
+    """An identifier, or `(none)` when the entry has none: sub-objects of an object whose type could not be
+    read (a VAR to code generators) have none."""
+    try:
+        return lookup(index, subindex)
+    except KeyError:
+        return "(none)"
 
 
 def _name(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
@@ -214,7 +224,7 @@ def _name(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
         note = "the name stays, but the generated identifier changes (a pin, or another entry took it)"
         yield _as_text(Kind.IDENTIFIER, Impact.BREAKING, index, sub, "identifier", before, after, note)
     if sub is not None and not moved and sides.old_ids.object(index) == sides.new_ids.object(index):
-        flat_before, flat_after = sides.old_ids.flat(index, sub), sides.new_ids.flat(index, sub)
+        flat_before, flat_after = _known(sides.old_ids.flat, index, sub), _known(sides.new_ids.flat, index, sub)
         if flat_before != flat_after:
             note = "the flat identifier (PDO fields, Python) changes"
             yield _as_text(
@@ -298,7 +308,7 @@ def _limits(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
         if same_value(before, after):
             continue
         dtype = sides.new.entry_type(new.var, new.owner)
-        impact, note = limit_impact(before, after, low, dtype, sides.new_node)
+        impact, note = limit_impact(before, after, low, dtype, sides.new_node, new.var.access or old.var.access)
         yield _value_change(kind, impact, old, field, before, after, dtype, note)
 
 
@@ -346,7 +356,8 @@ def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
                 else f"the same for node-ID {sides.new_node}, now follows the node-ID",
             )
         else:
-            yield _value_change(kind, Impact.VALUE, old, field, before, after, dtype)
+            impact, note = value_impact(old.owner.index, old.subindex, before, after)
+            yield _value_change(kind, impact, old, field, before, after, dtype, note)
 
 
 def _same_configured(old: Variable, new: Variable, sides: Sides) -> bool:
@@ -390,9 +401,7 @@ def _canopennode(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
         was, now = getattr(before, field), getattr(after, field)
         if was == now:
             continue
-        impact, note = Impact.VALUE, ""
-        if field == "disabled":  # a disabled object is left out of the generated OD
-            impact, note = flag_impact(not was, not now, "in the generated CANopenNode OD")
+        impact, note = canopennode_impact(field, was, now)
         yield _plain(
             Kind.CANOPENNODE,
             impact,
@@ -437,13 +446,17 @@ def section_changes(
         if before != after:
             impact = Impact.VALUE if key.lower() in _VALUE_KEYS else Impact.COSMETIC
             yield _plain(Kind.EXTRA_KEY, impact, index, subindex, f"{where}extra.{key}", before, after)
-    if old.comments != new.comments:
-        before_text, after_text = _comment_text(old.comments), _comment_text(new.comments)
+    before_text, after_text = _comment_text(old.comments), _comment_text(new.comments)
+    if before_text != after_text:
         yield _plain(Kind.COMMENT, Impact.COSMETIC, index, subindex, f"{where}comments", before_text, after_text)
 
 
 def _comment_text(comments: dict[str, list[str]]) -> str:
-    return " / ".join(line.strip() for lines in comments.values() for line in lines)
+    """The comment lines on one line, without those that state a property compared on its own (the storage
+    group of `;StorageLocation=`): one fact, one change."""
+    return " / ".join(
+        line.strip() for lines in comments.values() for line in lines if not line.startswith(STORAGE_PREFIX)
+    )
 
 
 _FIELD_COMPARISONS: tuple[Callable[[Sides, Entry, Entry], Iterator[Change]], ...] = (

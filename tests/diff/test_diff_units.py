@@ -9,7 +9,7 @@ import pytest
 from diffkit import BASE, device, diff_of, drop_section, only, set_key, summary
 
 from cantools_od import dumps, loads
-from cantools_od.changes import Impact, Kind, compare
+from cantools_od.changes import Breaks, Impact, Kind, compare
 
 
 def test_the_same_file_has_no_changes() -> None:
@@ -113,19 +113,26 @@ def test_pdo_mapping_flag() -> None:
 
 
 @pytest.mark.parametrize(
-    ("key", "value", "impact"),
+    ("access", "key", "value", "impact"),
     [
-        ("LowLimit", "5", Impact.BREAKING),  # 1 → 5: narrowed
-        ("LowLimit", "0", Impact.COMPATIBLE),
-        ("HighLimit", "100", Impact.BREAKING),
-        ("HighLimit", None, Impact.COMPATIBLE),  # no bound: the type's own range
-        ("HighLimit", "65535", Impact.COMPATIBLE),
+        # a narrower range breaks a master only where it writes the entry
+        ("rw", "LowLimit", "5", Impact.BREAKING),  # 1 → 5: narrowed
+        ("wo", "HighLimit", "100", Impact.BREAKING),
+        ("ro", "LowLimit", "5", Impact.COMPATIBLE),  # a master only reads it: fewer values still read fine
+        ("const", "HighLimit", "100", Impact.COMPATIBLE),
+        # a wider range breaks a master only where it reads the entry
+        ("rw", "LowLimit", "0", Impact.BREAKING),
+        ("ro", "HighLimit", None, Impact.BREAKING),  # no bound: the type's own range
+        ("wo", "HighLimit", "65535", Impact.COMPATIBLE),  # a master only writes it: what it wrote still fits
+        ("wo", "LowLimit", "0", Impact.COMPATIBLE),
     ],
 )
-def test_limits(key: str, value: str | None, impact: Impact) -> None:
-    change = only(diff_of(set_key(BASE, "2000sub2", key, value)))
+def test_limits(access: str, key: str, value: str | None, impact: Impact) -> None:
+    edited = set_key(BASE, "2000sub2", "AccessType", access)
+    change = only(diff_of(set_key(edited, "2000sub2", key, value), edited))
     assert change.kind is (Kind.LOW_LIMIT if key == "LowLimit" else Kind.HIGH_LIMIT)
     assert change.impact is impact
+    assert change.breaks == ([Breaks.WIRE] if impact is Impact.BREAKING else [])
 
 
 def test_default_is_a_value_change() -> None:
@@ -232,7 +239,7 @@ def test_diff_against_canonical_and_json_forms_is_empty() -> None:
 
 
 def test_counts_and_flags() -> None:
-    result = diff_of(set_key(drop_section(BASE, "1017"), "1005", "DefaultValue", "0x81"))
+    result = diff_of(set_key(drop_section(BASE, "1017"), "2000sub2", "DefaultValue", "20"))
     assert result.counts() == {Impact.BREAKING: 1, Impact.COMPATIBLE: 0, Impact.VALUE: 1, Impact.COSMETIC: 0}
     assert result.breaking and not result.empty
 

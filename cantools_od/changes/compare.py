@@ -330,8 +330,8 @@ def _value_change(
         field=field,
         old=before,
         new=after,
-        old_text=describe.value_text(before, dtype),
-        new_text=describe.value_text(after, dtype),
+        old_text=describe.entry_value_text(old.owner.index, old.subindex, before, dtype),
+        new_text=describe.entry_value_text(old.owner.index, old.subindex, after, dtype),
         note=note,
     )
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from ..model import AccessType, DataType, NodeIdExpr, Value, ValueKind
+from ..model import AccessType, DataType, NodeIdExpr, RawValue, Value, ValueKind
 from ..model.cia301.objects import (
     COB_ID_EMCY,
     COB_ID_SYNC,
@@ -150,7 +150,7 @@ def _bus_entry(index: int, subindex: int | None) -> str | None:
 def value_impact(index: int, subindex: int | None, old: Value | None, new: Value | None) -> tuple[Impact, str]:
     """A default or configured value: breaking for the bus where a master relies on it, else a value change."""
     why = _bus_entry(index, subindex)
-    if why is not None and old is not None and new is not None:
+    if why is not None and not isinstance(old, (RawValue, type(None))) and not isinstance(new, (RawValue, type(None))):
         return Impact.BREAKING, why
     return Impact.VALUE, ""
 

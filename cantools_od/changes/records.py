@@ -77,6 +77,7 @@ class Kind(StrEnum):
     PDO_REMOVED = "pdo-removed"
     PDO_COB_ID = "pdo-cob-id"
     PDO_TRANSMISSION_TYPE = "pdo-transmission-type"
+    PDO_TIMING = "pdo-timing"
     PDO_LAYOUT = "pdo-layout"
 
 
@@ -155,6 +156,8 @@ class PdoEntryView(BaseModel):
     name: str
     data_type: str
     identifier: str | None
+    exists: bool = True
+    """The mapped object (or dummy type) is in the dictionary."""
 
 
 class PdoView(BaseModel):
@@ -165,13 +168,16 @@ class PdoView(BaseModel):
     cob_id: Value | None
     transmission_type: int | None
     entries: list[PdoEntryView]
+    timing: dict[int, int] = {}
+    """Inhibit time (sub-index 3, 100 µs), event timer (5, ms), SYNC start value (6), as configured."""
     _pdo: Pdo | None = PrivateAttr(default=None)
 
     @classmethod
-    def of(cls, pdo: Pdo) -> PdoView:
+    def of(cls, pdo: Pdo, timing: dict[int, int] | None = None) -> PdoView:
         view = cls(
             cob_id=pdo.cob_id,
             transmission_type=pdo.transmission_type,
+            timing=timing or {},
             entries=[
                 PdoEntryView(
                     index=e.index,
@@ -181,6 +187,7 @@ class PdoView(BaseModel):
                     name=e.name,
                     data_type=e.data_type_name,
                     identifier=e.identifier,
+                    exists=e.exists,
                 )
                 for e in pdo.entries
             ],

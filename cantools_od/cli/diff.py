@@ -185,7 +185,10 @@ def _external_sides(args: tuple[str, ...], node_id: int | None) -> tuple[Side, S
     path, old_file, new_file = args[0], args[1], args[4]
     pins = _pins_file(pin_file_for(path))  # the temporary files git hands over have no pin file beside them
     old, new = _file_side(old_file, node_id, "-"), _file_side(new_file, node_id, "-")
-    old.device.source, new.device.source = f"a/{path}", f"b/{args[7] if len(args) == 9 else path}"
+    if old_file != NULL_DEVICE:  # git's /dev/null stays the name of the missing side of a new or deleted file
+        old.device.source = f"a/{path}"
+    if new_file != NULL_DEVICE:
+        new.device.source = f"b/{args[7] if len(args) == 9 else path}"
     return Side(old.device, pins), Side(new.device, pins)
 
 

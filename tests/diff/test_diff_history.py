@@ -12,6 +12,7 @@ from collections import Counter
 from functools import cache
 from pathlib import Path
 
+import click
 import pytest
 
 from cantools_od import dumps, load, loads
@@ -58,7 +59,7 @@ def rendered(result: DeviceDiff) -> None:
     data = json.loads(jsonout.render(result))
     errors = [error.message for error in validator().iter_errors(data)]  # type: ignore[attr-defined]
     assert not errors, errors[:3]
-    long = [line for line in text.render(result).splitlines() if len(line) > WIDTH]
+    long = [line for line in click.unstyle(text.render(result)).splitlines() if len(line) > WIDTH]
     assert not long, long[:3]
     assert markdown.render(result).startswith("## ")
 
@@ -74,10 +75,10 @@ _INVERSE |= {after: before for before, after in _INVERSE.items()}
 
 def _key(change: Change, inverted: bool = False) -> tuple[object, ...]:
     kind = _INVERSE.get(change.kind, change.kind) if inverted else change.kind
-    old, new = (change.new_text, change.old_text) if inverted else (change.old_text, change.new_text)
+    old, new = (change.new, change.old) if inverted else (change.old, change.new)
     if change.kind in _INVERSE:  # the entry as it was or is: the same text on the side it exists on
-        old, new = old or new, ""
-    return (kind.value, change.index, change.subindex, change.field, old, new)
+        old, new = change.old_text or change.new_text, ""
+    return (kind.value, change.index, change.subindex, change.field, repr(old), repr(new))
 
 
 def inverse_holds(forward: DeviceDiff, backward: DeviceDiff) -> None:

@@ -138,7 +138,7 @@ def test_limits(access: str, key: str, value: str | None, impact: Impact) -> Non
 def test_default_is_a_value_change() -> None:
     change = only(diff_of(set_key(BASE, "1017", "DefaultValue", "500")))
     assert (change.kind, change.impact, change.old, change.new) == (Kind.DEFAULT, Impact.VALUE, 1000, 500)
-    assert (change.old_text, change.new_text) == ("0x3E8 (1000)", "0x1F4 (500)")
+    assert (change.old_text, change.new_text) == ("1000 ms", "500 ms")  # the producer heartbeat time, decoded
 
 
 def test_nodeid_form() -> None:
@@ -269,3 +269,129 @@ def test_python_api_takes_paths_and_pin_files(tmp_path: Path) -> None:
     pins.write_text('[identifiers]\n"1017" = "producer_heartbeat_time"\n')
     assert only(cantools_od.diff(old, new, old_pins=pins, new_pins=pins)).impact is Impact.COSMETIC
     assert cantools_od.diff(device(), old).empty  # a Device and a path mix
+
+
+# TPDO1's entries as layout notes name them
+DI = "0x6000:01 read_input_8_bit_digital_inputs_1_to_8"
+AI1, AI2, AI3 = (f"0x6401:0{n} read_analog_input_16_bit_analog_input_{n}" for n in (1, 2, 3))
+
+
+def _layout_note(edited: str) -> str:
+    result = diff_of(edited)
+    notes = [c.note for c in result.changes() if c.kind is Kind.PDO_LAYOUT]
+    assert len(notes) == 1, [(c.kind.value, c.index, c.subindex) for c in result.changes()]
+    return notes[0]
+
+
+@pytest.mark.parametrize(
+    ("edits", "note"),
+    [
+        # TPDO1 maps 0x6000:01 (8 bits), 0x6401:01 (16), 0x6401:02 (16): 5 bytes
+        (
+            {"1A00sub0": "2"},
+            "trailing entry dropped: " + AI2 + "; length 5 bytes → 3 bytes",
+        ),
+        (
+            {"1A00sub3": "0x64010310"},
+            "source at bits 24-39: " + AI2 + " → " + AI3,
+        ),
+        (
+            {"1A00sub2": "0x64010210", "1A00sub3": "0x64010110"},
+            "reordered: " + DI + ", " + AI2 + ", " + AI1,
+        ),
+        (
+            {"1A00sub1": "0x60000110", "1A00sub0": "1"},
+            "resized " + DI + ": 8 → 16 bits; removed " + AI1 + ", " + AI2 + "; length 5 bytes → 2 bytes",
+        ),
+    ],
+)
+def test_pdo_layout_notes(edits: dict[str, str], note: str) -> None:
+    edited = BASE
+    for section, value in edits.items():
+        edited = set_key(edited, section, "DefaultValue", value)
+    assert _layout_note(edited) == note
+
+
+def test_pdo_layout_appended() -> None:
+    edited = set_key(BASE, "1A00sub0", "DefaultValue", "4")
+    edited = edited.replace(
+        "[1A01]\n",
+        "[1A00sub4]\nParameterName=Mapped object 4\nObjectType=0x7\nDataType=0x0007\n"
+        "AccessType=rw\nDefaultValue=0x64010310\nPDOMapping=0\n\n[1A01]\n",
+        1,
+    )
+    edited = set_key(edited, "1A00", "SubNumber", "5")
+    assert _layout_note(edited) == "appended " + AI3 + "; length 5 bytes → 7 bytes"
+
+
+def test_pdo_timing_is_with_the_pdo() -> None:
+    result = diff_of(set_key(set_key(BASE, "1800sub5", "DefaultValue", "500"), "1800sub3", "DefaultValue", "50"))
+    assert not result.objects  # shown with the PDO, not again under 0x1800
+    (pdo,) = result.pdos
+    shown = {(c.kind, c.index, c.subindex, c.old_text, c.new_text, c.impact) for c in pdo.changes}
+    assert shown == {
+        (Kind.PDO_TIMING, 0x1800, 3, "100 (10 ms)", "50 (5 ms)", Impact.VALUE),
+        (Kind.PDO_TIMING, 0x1800, 5, "1000 ms", "500 ms", Impact.VALUE),
+    }
+    assert pdo.after is not None and pdo.after.timing == {3: 50, 5: 500}
+
+
+@pytest.mark.parametrize(
+    ("section", "value", "old_text", "new_text", "impact"),
+    [
+        (
+            "1005",
+            "0x40000080",
+            "0x80 (consumes SYNC, CAN-ID 080h)",
+            "0x40000080 (produces SYNC, CAN-ID 080h)",
+            Impact.BREAKING,
+        ),
+        ("1016sub1", "0x000505DC", "0 (off)", "0x505DC (329180) (node 5, 1500 ms)", Impact.VALUE),
+        (
+            "1014",
+            "0x80000081",
+            "$NODEID+0x80 (CAN-ID node-ID + 080h)",
+            "0x80000081 (not valid, CAN-ID 081h)",
+            Impact.BREAKING,
+        ),
+        ("1800sub1", "0xC0000181", "", "", Impact.BREAKING),  # a PDO's COB-ID: with the PDO
+    ],
+)
+def test_values_are_decoded_where_cia301_defines_the_bits(
+    section: str, value: str, old_text: str, new_text: str, impact: Impact
+) -> None:
+    change = only(diff_of(set_key(BASE, section, "DefaultValue", value)))
+    assert change.impact is impact
+    if old_text:
+        assert (change.old_text, change.new_text) == (old_text, new_text)
+    else:
+        assert change.kind is Kind.PDO_COB_ID
+        assert change.new_text == "0xC0000181 (not valid, no RTR, CAN-ID 181h)"
+        assert change.old_text == "$NODEID+0x180 (CAN-ID node-ID + 180h)"
+    assert change.breaks == ([Breaks.WIRE] if impact is Impact.BREAKING else [])
+
+
+def test_device_type_and_identity_break_the_bus() -> None:
+    for section in ("1000", "1018sub1", "1018sub2"):
+        change = only(diff_of(set_key(BASE, section, "DefaultValue", "0x12345")))
+        assert (change.impact, change.breaks) == (Impact.BREAKING, [Breaks.WIRE]), section
+    assert only(diff_of(set_key(BASE, "1018sub3", "DefaultValue", "0x12345"))).impact is Impact.VALUE
+
+
+def test_storage_group_is_one_change_for_code() -> None:
+    """`;StorageLocation=` is the storage group: one change, breaking generated code, not again as a comment."""
+
+    def stored(group: str) -> str:
+        return BASE.replace(
+            "[2000]\nParameterName=Device settings\n",
+            f"[2000]\nParameterName=Device settings\n;StorageLocation={group}\n",
+            1,
+        )
+
+    change = only(diff_of(stored("PERSIST_COMM"), stored("RAM")))
+    assert (change.kind, change.field, change.impact, change.breaks) == (
+        Kind.CANOPENNODE,
+        "canopennode.storage_group",
+        Impact.BREAKING,
+        [Breaks.CODE],
+    )

@@ -50,9 +50,14 @@ def same_value(old: Value | None, new: Value | None) -> bool:
 def object_diffs(sides: Sides) -> list[ObjectDiff]:
     """One record per object that changed, in index order."""
     diffs = []
+    moves = _moves(sides)
     for index in sorted(set(sides.old.objects) | set(sides.new.objects)):
         old, new = sides.old.objects.get(index), sides.new.objects.get(index)
-        if old is None and new is not None:
+        if index in moves.values():  # reported once, at its new index
+            continue
+        if old is None and new is not None and index in moves:
+            changes = [_moved(moves[index], new)]
+        elif old is None and new is not None:
             changes = [_added(sides.new, new, None, Kind.OBJECT_ADDED)]
         elif new is None and old is not None:
             changes = [_removed(sides.old, old, None, Kind.OBJECT_REMOVED)]
@@ -62,6 +67,37 @@ def object_diffs(sides: Sides) -> list[ObjectDiff]:
             named = [_named(change, old, new) for change in changes]
             diffs.append(ObjectDiff(index=index, name=_entry_name(old, new, None), changes=named))
     return diffs
+
+
+def _moves(sides: Sides) -> dict[int, int]:
+    """Objects that moved to another index with the same name and content: new index → old index."""
+    gone = {obj.name: obj for index, obj in sides.old.objects.items() if index not in sides.new.objects}
+    moves = {}
+    for index, new in sides.new.objects.items():
+        old = gone.get(new.name) if index not in sides.old.objects else None
+        if old is not None and old.kind == new.kind and not any(_shown(c) for c in _object_changes(sides, old, new)):
+            moves[index] = old.index
+            del gone[new.name]
+    return moves
+
+
+def _shown(change: Change) -> bool:
+    """A change with something to show: its old and new text differ (identifiers follow the index when pinned)."""
+    return change.old_text != change.new_text and change.kind is not Kind.IDENTIFIER
+
+
+def _moved(before: int, new: Object) -> Change:
+    return Change(
+        kind=Kind.OBJECT_MOVED,
+        impact=Impact.BREAKING,
+        index=new.index,
+        field="index",
+        old=before,
+        new=new.index,
+        old_text=f"0x{before:04X}",
+        new_text=f"0x{new.index:04X}",
+        note="same name and content; a master addresses it at the new index",
+    )
 
 
 def _entry_name(old: Object | None, new: Object | None, subindex: int | None) -> str:
@@ -77,9 +113,16 @@ def _named(change: Change, old: Object | None, new: Object | None) -> Change:
 
 
 def _summary(device: Device, var: Variable, owner: Object) -> str:
+    disabled = (
+        ", disabled (CO_disabled: not in the generated OD)" if var.canopennode and var.canopennode.disabled else ""
+    )
     if var is owner and owner.has_subs:
         count = len(owner.subs)
-        return f"{owner.kind.name}, {count} sub-object{'s' if count != 1 else ''}"
+        return f"{owner.kind.name}, {count} sub-object{'s' if count != 1 else ''}{disabled}"
+    return _var_summary(device, var, owner) + disabled
+
+
+def _var_summary(device: Device, var: Variable, owner: Object) -> str:
     dtype = device.entry_type(var, owner)
     parts = [dtype.name if dtype is not None else _type_index(var.data_type)]
     if var.access is not None:
@@ -223,8 +266,9 @@ def _name(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     elif moved:
         note = "the name stays, but the generated identifier changes (a pin, or another entry took it)"
         yield _as_text(Kind.IDENTIFIER, Impact.BREAKING, index, sub, "identifier", before, after, note)
-    if sub is not None and not moved and sides.old_ids.object(index) == sides.new_ids.object(index):
-        flat_before, flat_after = _known(sides.old_ids.flat, index, sub), _known(sides.new_ids.flat, index, sub)
+    new_index = new.owner.index  # another index when the object moved
+    if sub is not None and not moved and sides.old_ids.object(index) == sides.new_ids.object(new_index):
+        flat_before, flat_after = _known(sides.old_ids.flat, index, sub), _known(sides.new_ids.flat, new_index, sub)
         if flat_before != flat_after:
             note = "the flat identifier (PDO fields, Python) changes"
             yield _as_text(

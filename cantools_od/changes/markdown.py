@@ -126,6 +126,9 @@ def _entry(change: Change) -> str:
     return f"{where} {_escape(change.name)}: "
 
 
+_VERBS = {Kind.NAME: "renamed", Kind.OBJECT_MOVED: "moved"}
+
+
 def _sentence(change: Change) -> str:
     """`data type `UNSIGNED16` → `UNSIGNED32` (width 16 bits → 32 bits)`, values in code spans."""
     if change.kind in (Kind.OBJECT_ADDED, Kind.SUB_ADDED, Kind.PDO_ADDED):
@@ -135,7 +138,9 @@ def _sentence(change: Change) -> str:
     elif change.kind is Kind.PDO_LAYOUT:
         text = f"mapping: {_escape(change.note)} (table below)"
     else:
-        what = "renamed" if change.kind is Kind.NAME else _escape(describe.label(change.field))
+        what = {Kind.NAME: "renamed", Kind.OBJECT_MOVED: "moved"}.get(change.kind) or _escape(
+            describe.label(change.field)
+        )
         if change.kind is Kind.NODEID_FORM:
             what += " ($NODEID form)"
         before, after = change.old_text, change.new_text

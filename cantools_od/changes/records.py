@@ -87,6 +87,7 @@ _WHO: dict[Kind, frozenset[Breaks]] = {
     Kind.OBJECT_REMOVED: _BOTH,  # generated code loses the entry; a master's SDO access to it is refused
     Kind.SUB_REMOVED: _BOTH,
     Kind.OBJECT_TYPE: _BOTH,  # the generated structure changes, and the sub-indices a master addresses
+    Kind.OBJECT_MOVED: _BOTH,  # a master addresses the old index; CANopenNode's OD_ENTRY_H<index> names change
     Kind.DATA_TYPE: _BOTH,  # the C type changes, and the number of bytes on the bus
     Kind.NAME: frozenset({Breaks.CODE}),  # a rename reaches generated identifiers only
     Kind.IDENTIFIER: frozenset({Breaks.CODE}),

@@ -76,9 +76,12 @@ _INVERSE |= {after: before for before, after in _INVERSE.items()}
 def _key(change: Change, inverted: bool = False) -> tuple[object, ...]:
     kind = _INVERSE.get(change.kind, change.kind) if inverted else change.kind
     old, new = (change.new, change.old) if inverted else (change.old, change.new)
-    if change.kind in _INVERSE:  # the entry as it was or is: the same text on the side it exists on
+    index = change.index
+    if change.kind is Kind.OBJECT_MOVED:  # told at the index it moved to
+        index = None
+    elif change.kind in _INVERSE:  # the entry as it was or is: the same text on the side it exists on
         old, new = change.old_text or change.new_text, ""
-    return (kind.value, change.index, change.subindex, change.field, repr(old), repr(new))
+    return (kind.value, index, change.subindex, change.field, repr(old), repr(new))
 
 
 def inverse_holds(forward: DeviceDiff, backward: DeviceDiff) -> None:

@@ -9,7 +9,7 @@ import pytest
 from diffkit import BASE, device, diff_of, drop_section, only, set_key, summary
 
 from cantools_od import dumps, loads
-from cantools_od.changes import Breaks, Impact, Kind, compare
+from cantools_od.changes import Breaks, Impact, Kind, compare, describe
 
 
 def test_the_same_file_has_no_changes() -> None:
@@ -395,3 +395,26 @@ def test_storage_group_is_one_change_for_code() -> None:
         Impact.BREAKING,
         [Breaks.CODE],
     )
+
+
+def test_an_object_moved_to_another_index_is_one_change() -> None:
+    moved = BASE.replace("[2000", "[2001").replace("=0x2000\n", "=0x2001\n").replace("0x20000320", "0x20010320")
+    result = diff_of(moved)
+    (obj,) = result.objects
+    change = only(result.model_copy(update={"pdos": []}))
+    assert (obj.index, change.kind, change.old, change.new) == (0x2001, Kind.OBJECT_MOVED, 0x2000, 0x2001)
+    assert change.breaks == [Breaks.WIRE, Breaks.CODE]
+    assert "moved from 0x2000 to 0x2001" in describe.sentence(change)
+    back = diff_of(BASE, moved)
+    assert [c.kind for c in back.objects[0].changes] == [Kind.OBJECT_MOVED]
+
+
+def test_an_object_added_disabled_says_so() -> None:
+    from cantools_od.model import CanopenNodeInfo
+
+    new = device()
+    new.objects[0x2000].canopennode = CanopenNodeInfo(disabled=True)
+    old = device()
+    del old.objects[0x2000]
+    change = only(compare(old, new).model_copy(update={"pdos": []}))
+    assert change.kind is Kind.OBJECT_ADDED and "disabled (CO_disabled" in change.new_text

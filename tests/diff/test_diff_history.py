@@ -24,6 +24,7 @@ from support import ROOT
 
 HISTORY = ROOT.parent / "shared" / "eds-history"
 WIDTH = 100
+LARGE = 150_000
 
 
 def pairs() -> list[Path]:
@@ -158,3 +159,32 @@ def test_a_new_file_is_never_breaking() -> None:
             Kind.SECTION,
             Kind.EXTRA_KEY,
         }
+
+
+def corpus_params() -> list[object]:
+    """Every device description of ../shared/eds-corpus (EDS, DCF, XDD, XDC)."""
+    from support import CORPUS, corpus_devices, file_params
+
+    xdd = CORPUS.parent / "xdd"
+    found = corpus_devices() + (sorted(xdd.iterdir()) if xdd.is_dir() else [])
+    return file_params(found, "../shared/eds-corpus is absent")
+
+
+@pytest.mark.parametrize("path", corpus_params())
+def test_corpus_file_against_its_conversions(path: Path) -> None:
+    """Against its conversion to every other format (a DCF and an XDC for node 5): whatever one format cannot hold
+    is a change, never a traceback; every output renders and the JSON follows the schema. Files over LARGE bytes
+    (a few vendor EDS of 300-500 KB) go to the other family of formats only, to keep the suite's time."""
+    original = load(path, node_id=5)
+    own = path.suffix.lower().lstrip(".")
+    formats = (
+        ("eds", "dcf", "xdd", "xdc", "json") if path.stat().st_size < LARGE else ("xdd" if own in "edsdcf" else "eds",)
+    )
+    for fmt in formats:
+        if fmt == own:
+            continue
+        converted = loads(dumps(original, fmt), source=f"converted.{fmt}")  # type: ignore[arg-type]
+        forward, backward = compare(original, converted), compare(converted, original)
+        rendered(forward)
+        rendered(backward)
+        inverse_holds(forward, backward)

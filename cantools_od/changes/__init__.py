@@ -10,6 +10,7 @@ from collections.abc import Mapping
 
 from ..identifiers import assign, load_pins
 from ..model import Device
+from . import formats
 from .compare import Sides, object_diffs
 from .device import device_changes
 from .pdos import VALUE_KINDS, absorbed, pdo_diffs
@@ -91,6 +92,16 @@ def compare(
         if kept:
             objects.append(obj.model_copy(update={"changes": kept}))
     device = [change for change in device_changes(old, new) if _told(change)]
+    everything = device + [change for obj in objects for change in obj.changes]
+    kept, not_comparable = formats.split(old.source, new.source, everything)
+    if not_comparable:
+        chosen = {id(change) for change in kept}
+        device = [change for change in device if id(change) in chosen] + not_comparable
+        objects = [
+            obj.model_copy(update={"changes": [c for c in obj.changes if id(c) in chosen]})
+            for obj in objects
+            if any(id(c) in chosen for c in obj.changes)
+        ]
     return DeviceDiff(old=old.source, new=new.source, device=device, objects=objects, pdos=pdos)
 
 

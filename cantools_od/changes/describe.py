@@ -186,6 +186,8 @@ def sentence(change: Change) -> str:
         text = f"added: {change.new_text}"
     elif kind in _REMOVED:
         text = f"removed: {change.old_text}"
+    elif kind == "not-comparable":
+        text = f"{label(change.field)}: not comparable"
     elif kind == "object-moved":
         text = f"moved from {change.old_text} to {change.new_text}"
     else:

@@ -78,6 +78,7 @@ class Kind(StrEnum):
     PDO_COB_ID = "pdo-cob-id"
     PDO_TRANSMISSION_TYPE = "pdo-transmission-type"
     PDO_TIMING = "pdo-timing"
+    NOT_COMPARABLE = "not-comparable"
     PDO_LAYOUT = "pdo-layout"
 
 

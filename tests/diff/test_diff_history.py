@@ -188,3 +188,24 @@ def test_corpus_file_against_its_conversions(path: Path) -> None:
         rendered(forward)
         rendered(backward)
         inverse_holds(forward, backward)
+
+
+def test_eds_against_the_xdd_of_the_same_device() -> None:
+    """CANopenDemo's demoDevice.eds and demoDevice.xdd (one commit, one device): what only one format states is
+    one not-comparable line per field, never a change per object; the one real difference is what is left."""
+    from support import CORPUS
+
+    eds, xdd = CORPUS / "canopendemo__demoDevice.eds", CORPUS.parent / "xdd" / "canopendemo__demoDevice.xdd"
+    if not (eds.is_file() and xdd.is_file()):
+        pytest.skip("the CANopenDemo files are not in ../shared/eds-corpus")
+    result = compare(device(eds), device(xdd))
+    lines = [c for c in result.device if c.kind is Kind.NOT_COMPARABLE]
+    fields = [c.field for c in lines]
+    assert len(fields) == len(set(fields))  # once per field
+    assert {"canopennode.storage_group", "canopennode.count_label", "extra.Description"} <= set(fields)
+    storage = next(c for c in lines if c.field == "canopennode.storage_group")
+    assert storage.note.startswith("only the EDS/DCF states it (278 entries: 0x1001, ")
+    assert [(c.kind, c.index) for obj in result.objects for c in obj.changes] == [(Kind.OBJECT_ADDED, 0x1280)]
+    assert "disabled (CO_disabled" in result.objects[0].changes[0].new_text  # the XDD's SDO client is disabled
+    assert not result.breaking
+    rendered(result)

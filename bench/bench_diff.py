@@ -70,8 +70,7 @@ def main() -> int:
         return 2
     old, new = largest_pair(options.history)
     run_diff(old, new)  # warm up: imports, pydantic schemas
-    result = {
-        "pair": old.parent.name,
+    result: dict[str, float] = {
         "bytes": old.stat().st_size + new.stat().st_size,
         "load_old_s": timed(lambda: load(old), options.rounds),
         "load_new_s": timed(lambda: load(new), options.rounds),
@@ -85,9 +84,9 @@ def main() -> int:
     result["time_ratio"] = result["diff_s"] / loads_s
     result["memory_ratio"] = result["diff_peak"] / loads_peak
     if options.json:
-        print(json.dumps(result, indent=2))
+        print(json.dumps({"pair": old.parent.name, **result}, indent=2))
     else:
-        print(f"pair {result['pair']} ({result['bytes'] / 1000:.0f} KB)")
+        print(f"pair {old.parent.name} ({result['bytes'] / 1000:.0f} KB)")
         print(f"load old + new: {loads_s:.2f} s, peak {loads_peak / 1e6:.0f} MB")
         print(f"diff:           {result['diff_s']:.2f} s, peak {result['diff_peak'] / 1e6:.0f} MB")
         print(f"ratio: time {result['time_ratio']:.2f}, memory {result['memory_ratio']:.2f} (goal: both <= 2)")

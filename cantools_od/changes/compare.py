@@ -9,7 +9,6 @@ from dataclasses import dataclass
 from ..eds.storage import PREFIX as STORAGE_PREFIX
 from ..identifiers import Identifiers
 from ..model import (
-    AccessType,
     CanopenNodeInfo,
     DataType,
     Device,
@@ -324,15 +323,24 @@ def _data_type(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     )
 
 
-def _access_text(access: AccessType | None) -> str:
-    return "-" if access is None else access.value
+_NO_ACCESS = "noAccess"  # an XDD's access of an entry no SDO reaches; the model keeps it as the key `access`
+
+
+def _access_text(var: Variable) -> str:
+    if var.access is not None:
+        return var.access.value
+    return _NO_ACCESS if _no_access(var) else "-"
+
+
+def _no_access(var: Variable) -> bool:
+    return var.access is None and var.extra.get("access") == _NO_ACCESS
 
 
 def _access(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
-    if old.var.access == new.var.access:
+    before, after = _access_text(old.var), _access_text(new.var)
+    if before == after:
         return
-    impact, note = access_impact(old.var.access, new.var.access)
-    before, after = _access_text(old.var.access), _access_text(new.var.access)
+    impact, note = access_impact(old.var.access, new.var.access, _no_access(old.var), _no_access(new.var))
     yield _as_text(Kind.ACCESS, impact, old.owner.index, old.subindex, "access", before, after, note)
 
 
@@ -459,7 +467,9 @@ def _canopennode(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 
 def _section_extras(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
-    yield from section_changes(old.var, new.var, old.owner.index, old.subindex)
+    for change in section_changes(old.var, new.var, old.owner.index, old.subindex):
+        if change.field != "extra.access":  # noAccess: told as the access change
+            yield change
 
 
 # Keys that are fields of the model when readable: kept in `extra` only when their value could not be read.

@@ -31,12 +31,18 @@ _CAPABILITIES: dict[AccessType, frozenset[str]] = {
 _ABLE = {"read": "readable", "write": "writable"}
 
 
-def access_impact(old: AccessType | None, new: AccessType | None) -> tuple[Impact, str]:
-    """Narrowed (a read or write lost) is breaking, widened compatible, the same abilities cosmetic."""
-    if old is None or new is None:
+def access_impact(
+    old: AccessType | None, new: AccessType | None, old_none: bool = False, new_none: bool = False
+) -> tuple[Impact, str]:
+    """Narrowed (a read or write lost) is breaking, widened compatible, the same abilities cosmetic.
+
+    `old_none`/`new_none`: the side is an XDD's noAccess (no SDO reaches the entry).
+    """
+    before = frozenset[str]() if old_none else _CAPABILITIES[old] if old is not None else None
+    after = frozenset[str]() if new_none else _CAPABILITIES[new] if new is not None else None
+    if before is None or after is None:
         return Impact.VALUE, "access type given on one side only"
-    lost = _CAPABILITIES[old] - _CAPABILITIES[new]
-    gained = _CAPABILITIES[new] - _CAPABILITIES[old]
+    lost, gained = before - after, after - before
     if lost:
         return Impact.BREAKING, "no longer " + " or ".join(_ABLE[ability] for ability in sorted(lost))
     if gained:

@@ -176,7 +176,8 @@ def _layout_notes(before: Pdo, after: Pdo, old: list[tuple[int, int]], new: list
         dropped = before.entries[len(new) :]
         yield f"trailing entr{'y' if len(dropped) == 1 else 'ies'} dropped: " + ", ".join(map(entry_text, dropped))
     elif sorted(old) == sorted(new) and old != new:
-        yield "reordered: " + ", ".join(entry_text(e) for e in after.entries)
+        moved = sum(a != b for a, b in zip(old, new, strict=True))
+        yield f"reordered: {moved} of {len(new)} entries at other bits"
     else:
         yield from _entry_notes(before, after)
 

@@ -297,7 +297,7 @@ def _layout_note(edited: str) -> str:
         ),
         (
             {"1A00sub2": "0x64010210", "1A00sub3": "0x64010110"},
-            "reordered: " + DI + ", " + AI2 + ", " + AI1,
+            "reordered: 2 of 3 entries at other bits",
         ),
         (
             {"1A00sub1": "0x60000110", "1A00sub0": "1"},

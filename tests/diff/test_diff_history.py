@@ -209,3 +209,68 @@ def test_eds_against_the_xdd_of_the_same_device() -> None:
     assert "disabled (CO_disabled" in result.objects[0].changes[0].new_text  # the XDD's SDO client is disabled
     assert not result.breaking
     rendered(result)
+
+
+@pytest.mark.parametrize("pair", pair_params())
+def test_pair_as_git_external_diff(pair: Path) -> None:
+    """As git runs it (GIT_EXTERNAL_DIFF: 7 arguments, /dev/null for a new file), with --fail-on breaking:
+    exit 1 exactly when a breaking change is found, one JSON document on stdout, no traceback."""
+    from click.testing import CliRunner
+
+    from cantools_od.cli import main
+
+    old, new = side(pair, "old"), side(pair, "new")
+    assert new is not None
+    path = f"od/device{new.suffix}"
+    args = [path, str(old or "/dev/null"), "0" * 40, "100644", str(new), "1" * 40, "100644"]
+    result = CliRunner().invoke(main, ["diff", *args, "--format", "json", "--fail-on", "breaking"])
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
+    assert "Traceback" not in result.stderr
+    expected = compare(device(old), device(new)).breaking
+    assert result.exit_code == (1 if expected else 0), result.stderr
+    data = json.loads(result.stdout)
+    assert data["old"] == ("/dev/null" if old is None else f"a/{path}") and data["new"] == f"b/{path}"
+    assert not list(validator().iter_errors(data))  # type: ignore[attr-defined]
+
+
+def _changes(pair: str) -> set[tuple[str, str, int | None, int | None]]:
+    folder = HISTORY / pair
+    if not folder.is_dir():
+        pytest.skip(f"{pair} is not in ../shared/eds-history")
+    result = compare(device(side(folder, "old")), device(side(folder, "new")))
+    return {(c.kind.value, text.tag(c), c.index, c.subindex) for c in result.changes()}
+
+
+def test_pair_victron_moved_object() -> None:
+    """[3209] Battery Current became [359E], nothing else: one move, not remove + add."""
+    assert _changes("victronenergy__dbus-canopen-motordrive__1") == {("object-moved", "wire+code", 0x359E, None)}
+
+
+def test_pair_canopen_python_limits() -> None:
+    """INTEGER32 0x3030: HighLimit 0 → 0xFFFFFFFF (-1), LowLimit 0xFFFFFFFF (-1) → 0x80000000; INTEGER64 0x3040:
+    LowLimit 0x8000000000000009 → 0xFFFFFFFFFFFFFFF6 (-10). The objects are rw: both directions break a master."""
+    assert _changes("canopen-python__canopen__4") == {
+        ("low-limit", "wire", 0x3030, None),  # widened, and a master reads it
+        ("high-limit", "wire", 0x3030, None),  # narrowed, and a master writes it
+        ("low-limit", "wire", 0x3040, None),
+    }
+
+
+def test_pair_gocanopen_tpdo_switched_on() -> None:
+    """TPDO1: COB-ID 0xC0000180+$NODEID → 0x40000180+$NODEID (made valid), transmission type 254 → 1, and
+    0x2001:00 (16 bits) mapped into an empty mapping."""
+    assert _changes("samsamfire__gocanopen__2") == {
+        ("pdo-cob-id", "wire", 0x1800, 1),
+        ("pdo-transmission-type", "value", 0x1800, 2),
+        ("pdo-layout", "wire", 0x1A00, None),
+    }
+
+
+def test_pair_oresat_readings_made_read_only() -> None:
+    assert _changes("oresat__oresat-firmware__1") == {
+        ("object-added", "compatible", 0x2106, None),
+        ("object-added", "compatible", 0x2107, None),
+        ("access", "wire", 0x2108, 1),  # rw → ro
+        ("name", "code", 0x2109, 1),  # MCU VREF → MCU VDDA: identifier mcu_vref → mcu_vdda
+        ("access", "wire", 0x2109, 1),
+    }

@@ -50,7 +50,8 @@ def device(path: Path | None) -> Device:
 
 @cache
 def validator() -> object:
-    jsonschema = pytest.importorskip("jsonschema")
+    import jsonschema  # a test dependency (pyproject.toml)
+
     schema = json.loads((resource_dir("schemas") / "diff.schema.json").read_text())
     return jsonschema.Draft202012Validator(schema)
 

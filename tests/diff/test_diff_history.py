@@ -98,6 +98,8 @@ def test_pair_in_every_format_and_both_ways(pair: Path) -> None:
     forward, backward = compare(old, new), compare(new, old)
     for result in (forward, backward):
         rendered(result)
+        same = [c for c in result.changes() if c.kind not in _INVERSE and c.old_text == c.new_text]
+        assert not same, same[:2]  # nothing is reported whose old and new text are equal
     inverse_holds(forward, backward)
     assert compare(old, old).empty and compare(new, new).empty
     if side(pair, "old") is None:  # a file new in this commit

@@ -418,3 +418,19 @@ def test_an_object_added_disabled_says_so() -> None:
     del old.objects[0x2000]
     change = only(compare(old, new).model_copy(update={"pdos": []}))
     assert change.kind is Kind.OBJECT_ADDED and "disabled (CO_disabled" in change.new_text
+
+
+@pytest.mark.parametrize(
+    ("source", "title"),
+    [
+        ("HEAD~1:od/device.eds", "HEAD~1:device.eds"),  # --git REV1 REV2 PATH
+        ("v1.2.0:firmware/od/drive.xdd", "v1.2.0:drive.xdd"),
+        ("/dev/null", "/dev/null"),  # a new or deleted file in git
+        ("a/od/device.eds", "device.eds"),  # git's external diff driver
+        ("../old/device.eds", "device.eds"),
+    ],
+)
+def test_markdown_title_names_revisions(source: str, title: str) -> None:
+    from cantools_od.changes.markdown import side_name
+
+    assert side_name(source) == title

@@ -10,13 +10,15 @@ from collections.abc import Mapping
 
 from ..identifiers import assign, load_pins
 from ..model import Device
+from . import formats
 from .compare import Sides, object_diffs
 from .device import device_changes
 from .pdos import VALUE_KINDS, absorbed, pdo_diffs
-from .records import IMPACT_ORDER, Change, DeviceDiff, Impact, Kind, ObjectDiff, PdoDiff, PdoEntryView, PdoView
+from .records import IMPACT_ORDER, Breaks, Change, DeviceDiff, Impact, Kind, ObjectDiff, PdoDiff, PdoEntryView, PdoView
 
 __all__ = [
     "IMPACT_ORDER",
+    "Breaks",
     "Change",
     "DeviceDiff",
     "Impact",
@@ -81,11 +83,31 @@ def compare(
         kept = [
             change
             for change in obj.changes
-            if not (
+            if _told(change)
+            and not (
                 change.kind in VALUE_KINDS
                 and ((change.index, change.subindex) in shown or (change.index, None) in shown)
             )
         ]
         if kept:
             objects.append(obj.model_copy(update={"changes": kept}))
-    return DeviceDiff(old=old.source, new=new.source, device=list(device_changes(old, new)), objects=objects, pdos=pdos)
+    device = [change for change in device_changes(old, new) if _told(change)]
+    everything = device + [change for obj in objects for change in obj.changes]
+    kept, not_comparable = formats.split(old.source, new.source, everything)
+    if not_comparable:
+        chosen = {id(change) for change in kept}
+        device = [change for change in device if id(change) in chosen] + not_comparable
+        objects = [
+            obj.model_copy(update={"changes": [c for c in obj.changes if id(c) in chosen]})
+            for obj in objects
+            if any(id(c) in chosen for c in obj.changes)
+        ]
+    return DeviceDiff(old=old.source, new=new.source, device=device, objects=objects, pdos=pdos)
+
+
+_WHOLE = frozenset({Kind.OBJECT_ADDED, Kind.OBJECT_REMOVED, Kind.SUB_ADDED, Kind.SUB_REMOVED})
+
+
+def _told(change: Change) -> bool:
+    """A change a reader can see: nothing is reported whose old and new text are equal."""
+    return change.kind in _WHOLE or change.old_text != change.new_text

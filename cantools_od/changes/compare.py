@@ -6,9 +6,9 @@ import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
+from ..eds.storage import PREFIX as STORAGE_PREFIX
 from ..identifiers import Identifiers
 from ..model import (
-    AccessType,
     CanopenNodeInfo,
     DataType,
     Device,
@@ -21,7 +21,7 @@ from ..model import (
     Variable,
 )
 from . import describe
-from .impact import access_impact, data_type_impact, flag_impact, limit_impact
+from .impact import access_impact, canopennode_impact, data_type_impact, flag_impact, limit_impact, value_impact
 from .records import Change, Impact, Kind, ObjectDiff
 
 
@@ -49,9 +49,14 @@ def same_value(old: Value | None, new: Value | None) -> bool:
 def object_diffs(sides: Sides) -> list[ObjectDiff]:
     """One record per object that changed, in index order."""
     diffs = []
+    moves = _moves(sides)
     for index in sorted(set(sides.old.objects) | set(sides.new.objects)):
         old, new = sides.old.objects.get(index), sides.new.objects.get(index)
-        if old is None and new is not None:
+        if index in moves.values():  # reported once, at its new index
+            continue
+        if old is None and new is not None and index in moves:
+            changes = [_moved(moves[index], new)]
+        elif old is None and new is not None:
             changes = [_added(sides.new, new, None, Kind.OBJECT_ADDED)]
         elif new is None and old is not None:
             changes = [_removed(sides.old, old, None, Kind.OBJECT_REMOVED)]
@@ -61,6 +66,37 @@ def object_diffs(sides: Sides) -> list[ObjectDiff]:
             named = [_named(change, old, new) for change in changes]
             diffs.append(ObjectDiff(index=index, name=_entry_name(old, new, None), changes=named))
     return diffs
+
+
+def _moves(sides: Sides) -> dict[int, int]:
+    """Objects that moved to another index with the same name and content: new index → old index."""
+    gone = {obj.name: obj for index, obj in sides.old.objects.items() if index not in sides.new.objects}
+    moves = {}
+    for index, new in sides.new.objects.items():
+        old = gone.get(new.name) if index not in sides.old.objects else None
+        if old is not None and old.kind == new.kind and not any(_shown(c) for c in _object_changes(sides, old, new)):
+            moves[index] = old.index
+            del gone[new.name]
+    return moves
+
+
+def _shown(change: Change) -> bool:
+    """A change with something to show: its old and new text differ (identifiers follow the index when pinned)."""
+    return change.old_text != change.new_text and change.kind is not Kind.IDENTIFIER
+
+
+def _moved(before: int, new: Object) -> Change:
+    return Change(
+        kind=Kind.OBJECT_MOVED,
+        impact=Impact.BREAKING,
+        index=new.index,
+        field="index",
+        old=before,
+        new=new.index,
+        old_text=f"0x{before:04X}",
+        new_text=f"0x{new.index:04X}",
+        note="same name and content; a master addresses it at the new index",
+    )
 
 
 def _entry_name(old: Object | None, new: Object | None, subindex: int | None) -> str:
@@ -76,9 +112,16 @@ def _named(change: Change, old: Object | None, new: Object | None) -> Change:
 
 
 def _summary(device: Device, var: Variable, owner: Object) -> str:
+    disabled = (
+        ", disabled (CO_disabled: not in the generated OD)" if var.canopennode and var.canopennode.disabled else ""
+    )
     if var is owner and owner.has_subs:
         count = len(owner.subs)
-        return f"{owner.kind.name}, {count} sub-object{'s' if count != 1 else ''}"
+        return f"{owner.kind.name}, {count} sub-object{'s' if count != 1 else ''}{disabled}"
+    return _var_summary(device, var, owner) + disabled
+
+
+def _var_summary(device: Device, var: Variable, owner: Object) -> str:
     dtype = device.entry_type(var, owner)
     parts = [dtype.name if dtype is not None else _type_index(var.data_type)]
     if var.access is not None:
@@ -199,7 +242,16 @@ def _storable(value: object) -> Value | None:
 def _identifier(ids: Identifiers, entry: Entry) -> str:
     if entry.subindex is None:
         return ids.object(entry.owner.index)
-    return ids.member(entry.owner.index, entry.subindex)
+    return _known(ids.member, entry.owner.index, entry.subindex)
+
+
+def _known(lookup: Callable[[int, int], str], index: int, subindex: int) -> str:
+    """An identifier, or `(none)` when the entry has none: sub-objects of an object whose type could not be
+    read (a VAR to code generators) have none."""
+    try:
+        return lookup(index, subindex)
+    except KeyError:
+        return "(none)"
 
 
 def _name(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
@@ -213,8 +265,9 @@ def _name(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     elif moved:
         note = "the name stays, but the generated identifier changes (a pin, or another entry took it)"
         yield _as_text(Kind.IDENTIFIER, Impact.BREAKING, index, sub, "identifier", before, after, note)
-    if sub is not None and not moved and sides.old_ids.object(index) == sides.new_ids.object(index):
-        flat_before, flat_after = sides.old_ids.flat(index, sub), sides.new_ids.flat(index, sub)
+    new_index = new.owner.index  # another index when the object moved
+    if sub is not None and not moved and sides.old_ids.object(index) == sides.new_ids.object(new_index):
+        flat_before, flat_after = _known(sides.old_ids.flat, index, sub), _known(sides.new_ids.flat, new_index, sub)
         if flat_before != flat_after:
             note = "the flat identifier (PDO fields, Python) changes"
             yield _as_text(
@@ -270,15 +323,24 @@ def _data_type(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     )
 
 
-def _access_text(access: AccessType | None) -> str:
-    return "-" if access is None else access.value
+_NO_ACCESS = "noAccess"  # an XDD's access of an entry no SDO reaches; the model keeps it as the key `access`
+
+
+def _access_text(var: Variable) -> str:
+    if var.access is not None:
+        return var.access.value
+    return _NO_ACCESS if _no_access(var) else "-"
+
+
+def _no_access(var: Variable) -> bool:
+    return var.access is None and var.extra.get("access") == _NO_ACCESS
 
 
 def _access(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
-    if old.var.access == new.var.access:
+    before, after = _access_text(old.var), _access_text(new.var)
+    if before == after:
         return
-    impact, note = access_impact(old.var.access, new.var.access)
-    before, after = _access_text(old.var.access), _access_text(new.var.access)
+    impact, note = access_impact(old.var.access, new.var.access, _no_access(old.var), _no_access(new.var))
     yield _as_text(Kind.ACCESS, impact, old.owner.index, old.subindex, "access", before, after, note)
 
 
@@ -298,7 +360,7 @@ def _limits(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
         if same_value(before, after):
             continue
         dtype = sides.new.entry_type(new.var, new.owner)
-        impact, note = limit_impact(before, after, low, dtype, sides.new_node)
+        impact, note = limit_impact(before, after, low, dtype, sides.new_node, new.var.access or old.var.access)
         yield _value_change(kind, impact, old, field, before, after, dtype, note)
 
 
@@ -320,8 +382,8 @@ def _value_change(
         field=field,
         old=before,
         new=after,
-        old_text=describe.value_text(before, dtype),
-        new_text=describe.value_text(after, dtype),
+        old_text=describe.entry_value_text(old.owner.index, old.subindex, before, dtype),
+        new_text=describe.entry_value_text(old.owner.index, old.subindex, after, dtype),
         note=note,
     )
 
@@ -346,7 +408,8 @@ def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
                 else f"the same for node-ID {sides.new_node}, now follows the node-ID",
             )
         else:
-            yield _value_change(kind, Impact.VALUE, old, field, before, after, dtype)
+            impact, note = value_impact(old.owner.index, old.subindex, before, after)
+            yield _value_change(kind, impact, old, field, before, after, dtype, note)
 
 
 def _same_configured(old: Variable, new: Variable, sides: Sides) -> bool:
@@ -390,9 +453,7 @@ def _canopennode(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
         was, now = getattr(before, field), getattr(after, field)
         if was == now:
             continue
-        impact, note = Impact.VALUE, ""
-        if field == "disabled":  # a disabled object is left out of the generated OD
-            impact, note = flag_impact(not was, not now, "in the generated CANopenNode OD")
+        impact, note = canopennode_impact(field, was, now)
         yield _plain(
             Kind.CANOPENNODE,
             impact,
@@ -406,7 +467,9 @@ def _canopennode(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 
 def _section_extras(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
-    yield from section_changes(old.var, new.var, old.owner.index, old.subindex)
+    for change in section_changes(old.var, new.var, old.owner.index, old.subindex):
+        if change.field != "extra.access":  # noAccess: told as the access change
+            yield change
 
 
 # Keys that are fields of the model when readable: kept in `extra` only when their value could not be read.
@@ -437,13 +500,17 @@ def section_changes(
         if before != after:
             impact = Impact.VALUE if key.lower() in _VALUE_KEYS else Impact.COSMETIC
             yield _plain(Kind.EXTRA_KEY, impact, index, subindex, f"{where}extra.{key}", before, after)
-    if old.comments != new.comments:
-        before_text, after_text = _comment_text(old.comments), _comment_text(new.comments)
+    before_text, after_text = _comment_text(old.comments), _comment_text(new.comments)
+    if before_text != after_text:
         yield _plain(Kind.COMMENT, Impact.COSMETIC, index, subindex, f"{where}comments", before_text, after_text)
 
 
 def _comment_text(comments: dict[str, list[str]]) -> str:
-    return " / ".join(line.strip() for lines in comments.values() for line in lines)
+    """The comment lines on one line, without those that state a property compared on its own (the storage
+    group of `;StorageLocation=`): one fact, one change."""
+    return " / ".join(
+        line.strip() for lines in comments.values() for line in lines if not line.startswith(STORAGE_PREFIX)
+    )
 
 
 _FIELD_COMPARISONS: tuple[Callable[[Sides, Entry, Entry], Iterator[Change]], ...] = (

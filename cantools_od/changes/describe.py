@@ -5,6 +5,19 @@ from __future__ import annotations
 import math
 
 from ..model import DataType, NodeIdExpr, ObjectKind, RawValue, TimeValue, Value, ValueKind
+from ..model.cia301.cobid import BASE_11BIT, BASE_29BIT, EXTENDED, RTR, VALID
+from ..model.cia301.objects import (
+    COB_ID_EMCY,
+    COB_ID_SYNC,
+    COB_ID_TIME,
+    CONSUMER_HEARTBEAT,
+    ERROR_BEHAVIOR,
+    PRODUCER_HEARTBEAT,
+    RPDO_COMM,
+    SDO_CLIENTS,
+    SDO_SERVERS,
+    TPDO_COMM,
+)
 from .records import Change
 
 
@@ -55,17 +68,66 @@ def object_type_text(kind: ObjectKind) -> str:
 
 
 def address(index: int | None, subindex: int | None) -> str:
-    """`0x1A00`, `0x1A00 sub 1`, or empty for device-level changes."""
+    """`0x1A00`, `0x1A00:01` (index:sub-index), or empty for device-level changes."""
     if index is None:
         return ""
-    return f"0x{index:04X}" if subindex is None else f"0x{index:04X} sub {subindex}"
+    return f"0x{index:04X}" if subindex is None else f"0x{index:04X}:{subindex:02X}"
 
 
-def cob_id_text(value: Value | None) -> str:
-    """A COB-ID with its valid bit spelled out."""
-    if isinstance(value, int) and not isinstance(value, bool):
-        return f"0x{value:X}" + (" (disabled)" if value & 0x80000000 else "")
-    return value_text(value)
+def cob_id_text(value: Value | None, role: str = "PDO") -> str:
+    """A COB-ID with its bits spelled out (CiA 301 §7.5.2): `0x80000185 (not valid, CAN-ID 185h)`,
+    `$NODEID+0x180 (CAN-ID node-ID + 180h)`. `role` is PDO, SDO, EMCY, SYNC or TIME: bits 31 and 30 differ."""
+    if isinstance(value, NodeIdExpr):
+        bits, written, base = value.offset, value.canonical(), "node-ID + "
+    elif isinstance(value, int) and not isinstance(value, bool):
+        bits, written, base = value, f"0x{value:X}", ""
+    else:
+        return value_text(value)
+    extended = bool(bits & EXTENDED)
+    parts = [f"CAN-ID {base}{bits & (BASE_29BIT if extended else BASE_11BIT):03X}h" + (" (29-bit)" if extended else "")]
+    return f"{written} ({', '.join([*_cob_flags(bits, role), *parts])})"
+
+
+def _cob_flags(bits: int, role: str) -> list[str]:
+    if role == "SYNC":
+        return ["produces SYNC" if bits & RTR else "consumes SYNC"]
+    if role == "TIME":
+        roles = [role for role, bit in (("consumes", VALID), ("produces", RTR)) if bits & bit]
+        return [" and ".join(roles) + " TIME" if roles else "TIME off"]
+    flags = ["not valid"] if bits & VALID else []
+    return flags + (["no RTR"] if role == "PDO" and bits & RTR else [])
+
+
+_COB_ROLES = {COB_ID_SYNC: "SYNC", COB_ID_TIME: "TIME", COB_ID_EMCY: "EMCY"}
+_ERROR_BEHAVIOUR = {0: "pre-operational", 1: "no state change", 2: "stopped"}
+
+
+def entry_value_text(index: int, subindex: int | None, value: Value | None, dtype: DataType | None) -> str:
+    """A value of an entry, decoded where CiA 301 defines its bits: COB-IDs, heartbeat consumer and producer
+    times, error behaviour; any other entry as `value_text`."""
+    role = _cob_role(index, subindex)
+    if role is not None:
+        return cob_id_text(value, role)
+    if not isinstance(value, int) or isinstance(value, bool):
+        return value_text(value, dtype)
+    if index == CONSUMER_HEARTBEAT and subindex:
+        node, time = (value >> 16) & 0x7F, value & 0xFFFF
+        return f"{value_text(value, dtype)} (node {node}, {time} ms)" if time else f"{value_text(value, dtype)} (off)"
+    if index == PRODUCER_HEARTBEAT:
+        return f"{value} ms" if value else "0 (off)"
+    if index == ERROR_BEHAVIOR and subindex and value in _ERROR_BEHAVIOUR:
+        return f"{value} ({_ERROR_BEHAVIOUR[value]})"
+    return value_text(value, dtype)
+
+
+def _cob_role(index: int, subindex: int | None) -> str | None:
+    if index in _COB_ROLES and not subindex:
+        return _COB_ROLES[index]
+    if (index in RPDO_COMM or index in TPDO_COMM) and subindex == 1:
+        return "PDO"
+    if (index in SDO_SERVERS or index in SDO_CLIENTS) and subindex in (1, 2):
+        return "SDO"
+    return None
 
 
 _LABELS = {
@@ -124,6 +186,10 @@ def sentence(change: Change) -> str:
         text = f"added: {change.new_text}"
     elif kind in _REMOVED:
         text = f"removed: {change.old_text}"
+    elif kind == "not-comparable":
+        text = f"{label(change.field)}: not comparable"
+    elif kind == "object-moved":
+        text = f"moved from {change.old_text} to {change.new_text}"
     else:
         what = label(change.field)
         if kind == "nodeid-form":

@@ -78,7 +78,7 @@ def _device_info(old: Device, new: Device) -> Iterator[Change]:
             continue
         name = f"device_info.{field}"
         if field in _IDENTITY:
-            impact, note = _IDENTITY[field]
+            impact, note = _IDENTITY[field] if was is not None and now is not None else _stated(was)
             yield _field_change(Kind.IDENTITY, impact, name, was, now, note)
         elif field in _FLAGS:
             if bool(was) != bool(now):
@@ -90,6 +90,11 @@ def _device_info(old: Device, new: Device) -> Iterator[Change]:
         else:
             yield _field_change(Kind.DEVICE_INFO, Impact.COSMETIC if field in _TEXT else Impact.VALUE, name, was, now)
     yield from section_changes(before, after, None, None, "device_info.")
+
+
+def _stated(was: object) -> tuple[Impact, str]:
+    """Identity stated on one side only (a new file, or a key added or dropped): nothing a master relied on."""
+    return (Impact.COMPATIBLE, "stated now") if was is None else (Impact.VALUE, "no longer stated")
 
 
 def _baud_rates(old: Device, new: Device) -> Iterator[Change]:

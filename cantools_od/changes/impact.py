@@ -4,7 +4,18 @@ from __future__ import annotations
 
 import math
 
-from ..model import AccessType, DataType, NodeIdExpr, Value, ValueKind
+from ..model import AccessType, DataType, NodeIdExpr, RawValue, Value, ValueKind
+from ..model.cia301.objects import (
+    COB_ID_EMCY,
+    COB_ID_SYNC,
+    COB_ID_TIME,
+    DEVICE_TYPE,
+    IDENTITY,
+    IDENTITY_PRODUCT_CODE,
+    IDENTITY_VENDOR_ID,
+    SDO_CLIENTS,
+    SDO_SERVERS,
+)
 from .records import Impact
 
 # What each access type lets a user of the device do. `const` reads like `ro`: a constant is still read.
@@ -20,12 +31,18 @@ _CAPABILITIES: dict[AccessType, frozenset[str]] = {
 _ABLE = {"read": "readable", "write": "writable"}
 
 
-def access_impact(old: AccessType | None, new: AccessType | None) -> tuple[Impact, str]:
-    """Narrowed (a read or write lost) is breaking, widened compatible, the same abilities cosmetic."""
-    if old is None or new is None:
+def access_impact(
+    old: AccessType | None, new: AccessType | None, old_none: bool = False, new_none: bool = False
+) -> tuple[Impact, str]:
+    """Narrowed (a read or write lost) is breaking, widened compatible, the same abilities cosmetic.
+
+    `old_none`/`new_none`: the side is an XDD's noAccess (no SDO reaches the entry).
+    """
+    before = frozenset[str]() if old_none else _CAPABILITIES[old] if old is not None else None
+    after = frozenset[str]() if new_none else _CAPABILITIES[new] if new is not None else None
+    if before is None or after is None:
         return Impact.VALUE, "access type given on one side only"
-    lost = _CAPABILITIES[old] - _CAPABILITIES[new]
-    gained = _CAPABILITIES[new] - _CAPABILITIES[old]
+    lost, gained = before - after, after - before
     if lost:
         return Impact.BREAKING, "no longer " + " or ".join(_ABLE[ability] for ability in sorted(lost))
     if gained:
@@ -80,11 +97,18 @@ def _number(value: Value | None, node_id: int | None) -> float | None:
 
 
 def limit_impact(
-    old: Value | None, new: Value | None, low: bool, dtype: DataType | None, node_id: int | None
+    old: Value | None,
+    new: Value | None,
+    low: bool,
+    dtype: DataType | None,
+    node_id: int | None,
+    access: AccessType | None = None,
 ) -> tuple[Impact, str]:
-    """A bound that admits fewer values (narrowed range) is breaking, more values compatible.
+    """A narrower range breaks a master that writes the entry (values it wrote are now refused); a wider range
+    breaks a master that reads it (the device may answer values it did not expect). Otherwise compatible.
 
     A missing bound is the data type's own (or unbounded); bounds that are not numbers are compared as values.
+    An entry of unknown access is taken as read and written.
     """
     unbounded = -math.inf if low else math.inf
     type_range = dtype.int_range() if dtype is not None else None
@@ -96,6 +120,55 @@ def limit_impact(
     if before == after:
         return Impact.COSMETIC, "same bound"
     narrowed = after > before if low else after < before
+    abilities = _CAPABILITIES[access] if access is not None else frozenset({"read", "write"})
     if narrowed:
-        return Impact.BREAKING, "range narrowed"
-    return Impact.COMPATIBLE, "range widened"
+        if "write" in abilities:
+            return Impact.BREAKING, "range narrowed, and a master writes it"
+        return Impact.COMPATIBLE, "range narrowed, but a master only reads it"
+    if "read" in abilities:
+        return Impact.BREAKING, "range widened, and a master reads it"
+    return Impact.COMPATIBLE, "range widened, and a master only writes it"
+
+
+# Entries a master or another node relies on as they are on the bus: identity it checks at boot (CiA 302) and
+# COB-IDs it sends or listens on. A change of their value (both sides stating one) breaks the bus.
+_BOOT_CHECKS = {
+    (DEVICE_TYPE, None): "a master checks the device type (1000h) at boot",
+    (DEVICE_TYPE, 0): "a master checks the device type (1000h) at boot",
+    (IDENTITY, IDENTITY_VENDOR_ID): "a master checks the vendor-ID at boot",
+    (IDENTITY, IDENTITY_PRODUCT_CODE): "a master checks the product code at boot",
+}
+_COB_ID_OBJECTS = {COB_ID_SYNC: "SYNC", COB_ID_TIME: "TIME", COB_ID_EMCY: "EMCY"}
+_SDO_COB_ID_SUBS = (1, 2)
+
+
+def _bus_entry(index: int, subindex: int | None) -> str | None:
+    """Why the value of this entry matters on the bus, None when it is an ordinary value."""
+    if (index, subindex) in _BOOT_CHECKS:
+        return _BOOT_CHECKS[(index, subindex)]
+    if index in _COB_ID_OBJECTS and subindex in (None, 0):
+        return f"the {_COB_ID_OBJECTS[index]} COB-ID on the bus"
+    if (index in SDO_SERVERS or index in SDO_CLIENTS) and subindex in _SDO_COB_ID_SUBS:
+        return "an SDO COB-ID on the bus"
+    return None
+
+
+def value_impact(index: int, subindex: int | None, old: Value | None, new: Value | None) -> tuple[Impact, str]:
+    """A default or configured value: breaking for the bus where a master relies on it, else a value change."""
+    why = _bus_entry(index, subindex)
+    if why is not None and not isinstance(old, (RawValue, type(None))) and not isinstance(new, (RawValue, type(None))):
+        return Impact.BREAKING, why
+    return Impact.VALUE, ""
+
+
+def canopennode_impact(field: str, old: object, new: object) -> tuple[Impact, str]:
+    """CANopenNode properties: the storage group and count label decide generated code; a disabled object is
+    left out of the generated OD (and so gone from the bus)."""
+    if field == "disabled":
+        return flag_impact(not old, not new, "in the generated CANopenNode OD (CO_disabled)")
+    if field in ("storage_group", "count_label") and old is not None and new is not None:
+        what = "storage group" if field == "storage_group" else "OD_CNT_ count"
+        return Impact.BREAKING, f"generated code and the stored layout change ({what})"
+    if old is None or new is None:
+        return Impact.VALUE, "stated on one side only"
+    return Impact.VALUE, ""

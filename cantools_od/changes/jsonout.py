@@ -10,7 +10,7 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict
 
-from .records import DeviceDiff, Impact
+from .records import Breaks, DeviceDiff, Impact
 
 SCHEMA_ID = "https://cantools-od.invalid/schemas/diff.schema.json"
 
@@ -24,6 +24,10 @@ class Summary(BaseModel):
     compatible: int
     value: int
     cosmetic: int
+    wire: int
+    """Breaking changes that hurt the bus (a master or node configured for the old file)."""
+    code: int
+    """Breaking changes that hurt code generated from the old file."""
 
 
 class DiffReport(DeviceDiff):
@@ -34,9 +38,14 @@ class DiffReport(DeviceDiff):
 
 def report(diff: DeviceDiff) -> DiffReport:
     counts = diff.counts()
-    return DiffReport.model_validate(
-        {**diff.model_dump(), "summary": Summary(**{impact.value: counts[impact] for impact in Impact})}
+    summary = Summary(
+        **{impact.value: counts[impact] for impact in Impact},
+        wire=sum(Breaks.WIRE in change.breaks for change in diff.changes()),
+        code=sum(Breaks.CODE in change.breaks for change in diff.changes()),
     )
+    # the records as they are: validating their dump again would read a typed value's Python form as JSON
+    fields = {name: getattr(diff, name) for name in DeviceDiff.model_fields}
+    return DiffReport.model_construct(**fields, summary=summary)
 
 
 def render(diff: DeviceDiff) -> str:

@@ -6,9 +6,10 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import PurePath
 
+from ..model.cia301.pdo import is_dummy_index
 from . import describe
-from .pdos import transmission_text
-from .records import IMPACT_ORDER, Change, DeviceDiff, Impact, Kind, PdoDiff, PdoView
+from .pdos import TIMING_SUBS, timing_text, transmission_text
+from .records import IMPACT_ORDER, Breaks, Change, DeviceDiff, Impact, Kind, PdoDiff, PdoEntryView, PdoView
 
 _HEADINGS = {
     Impact.BREAKING: "Breaking changes",
@@ -17,13 +18,18 @@ _HEADINGS = {
     Impact.COSMETIC: "Cosmetic changes",
 }
 _INTRO = {
-    Impact.BREAKING: "Code generated from the old file, or a master configured for it, may fail with the new one.",
+    Impact.BREAKING: "wire: a master or node configured for the old file may fail on the bus; "
+    "code: firmware generated from the old file may no longer build or keep its stored data.",
     Impact.COMPATIBLE: "Additions and widened ranges: what worked before still works.",
     Impact.VALUE: "Defaults and other values: interfaces stay, behaviour may differ.",
     Impact.COSMETIC: "Names whose identifiers stay, comments, file metadata.",
 }
+_WHO = {Breaks.WIRE: "on the bus", Breaks.CODE: "in generated code"}
 _FOLD_AFTER = 40  # lines of a section (other than breaking changes) shown before it folds into <details>
-_LAYOUT_KINDS = (Kind.PDO_LAYOUT, Kind.PDO_ADDED, Kind.PDO_REMOVED)
+_LAYOUT_KINDS = (Kind.PDO_LAYOUT,)
+_PDO_KINDS = frozenset(
+    {Kind.PDO_LAYOUT, Kind.PDO_COB_ID, Kind.PDO_TRANSMISSION_TYPE, Kind.PDO_TIMING, Kind.PDO_ADDED, Kind.PDO_REMOVED}
+)
 
 
 def _escape(text: str) -> str:
@@ -51,15 +57,27 @@ class _Group:
         return [f"- {self.title}", *(f"  - {line}" for line in self.lines)]
 
 
+def side_name(source: str) -> str:
+    """A side as the title names it: `/dev/null` (a new or deleted file), `v1.2:device.eds` (a revision), or the
+    file's name."""
+    if source == "/dev/null":
+        return source
+    revision, colon, path = source.rpartition(":")
+    if colon and revision and "/" not in revision and "\\" not in revision:
+        return f"{revision}:{PurePath(path).name}"
+    return PurePath(source).name or source
+
+
 def render(diff: DeviceDiff) -> str:
-    old, new = PurePath(diff.old).name or diff.old, PurePath(diff.new).name or diff.new
+    old, new = side_name(diff.old), side_name(diff.new)
     lines = [f"## Object dictionary changes: {_code(old)} → {_code(new)}", ""]
     if diff.empty:
         return "\n".join([*lines, "No changes.", ""])
     counts = diff.counts()
     parts = [f"{counts[impact]} {impact.value}" for impact in IMPACT_ORDER]
     if counts[Impact.BREAKING]:
-        parts[0] = f"**{parts[0]}**"
+        who = ", ".join(f"{sum(hurt in c.breaks for c in diff.changes())} {_WHO[hurt]}" for hurt in Breaks)
+        parts[0] = f"**{parts[0]}** ({who})"
     lines += [", ".join(parts) + " changes.", ""]
     for impact in IMPACT_ORDER:
         groups = list(_groups(diff, impact))
@@ -78,27 +96,37 @@ def render(diff: DeviceDiff) -> str:
 
 
 def _groups(diff: DeviceDiff, impact: Impact) -> Iterator[_Group]:
-    device = _Group("**Device**", [_sentence(c) for c in diff.device if c.impact is impact])
+    device = _Group("**Device**", [_who(c) + _sentence(c) for c in diff.device if c.impact is impact])
     if device.lines:
         yield device
     for obj in diff.objects:
         group = _Group(f"{_code(f'0x{obj.index:04X}')} **{_escape(obj.name)}**")
-        group.lines = [_entry(change) + _sentence(change) for change in obj.changes if change.impact is impact]
+        group.lines = [_who(c) + _entry(c) + _sentence(c) for c in obj.changes if c.impact is impact]
         if group.lines:
             yield group
     for pdo in diff.pdos:
         title = f"**{pdo.name}** ({_code(f'0x{pdo.comm_index:04X}')}/{_code(f'0x{pdo.map_index:04X}')})"
-        group = _Group(title, [_sentence(change) for change in pdo.changes if change.impact is impact])
+        group = _Group(title, [_who(c) + _entry(c) + _sentence(c) for c in pdo.changes if c.impact is impact])
         if group.lines:
             yield group
 
 
+def _who(change: Change) -> str:
+    """`**wire** ` before a breaking change: who it hurts."""
+    return f"**{'+'.join(hurt.value for hurt in change.breaks)}** " if change.breaks else ""
+
+
 def _entry(change: Change) -> str:
-    if change.subindex is None:
+    """`` `0x2000:02` Input filter time: `` for a sub-object, `` `0x1A00`: `` for an object line of a PDO."""
+    if change.index is None or (change.subindex is None and change.kind not in _PDO_KINDS):
         return ""
-    if change.kind is Kind.NAME:  # the sentence names it
-        return f"sub {change.subindex}: "
-    return f"sub {change.subindex} {_escape(change.name)}: "
+    where = _code(describe.address(change.index, change.subindex))
+    if change.kind is Kind.NAME or change.kind in _PDO_KINDS:  # the sentence (or the PDO's title) names it
+        return f"{where}: "
+    return f"{where} {_escape(change.name)}: "
+
+
+_VERBS = {Kind.NAME: "renamed", Kind.OBJECT_MOVED: "moved"}
 
 
 def _sentence(change: Change) -> str:
@@ -108,9 +136,11 @@ def _sentence(change: Change) -> str:
     elif change.kind in (Kind.OBJECT_REMOVED, Kind.SUB_REMOVED, Kind.PDO_REMOVED):
         text = f"removed (was {_code(change.old_text)})"
     elif change.kind is Kind.PDO_LAYOUT:
-        text = "mapping changed (table below)"
+        text = f"mapping: {_escape(change.note)} (table below)"
     else:
-        what = "renamed" if change.kind is Kind.NAME else _escape(describe.label(change.field))
+        what = {Kind.NAME: "renamed", Kind.OBJECT_MOVED: "moved"}.get(change.kind) or _escape(
+            describe.label(change.field)
+        )
         if change.kind is Kind.NODEID_FORM:
             what += " ($NODEID form)"
         before, after = change.old_text, change.new_text
@@ -125,7 +155,7 @@ def _pdo_table(pdo: PdoDiff) -> Iterator[str]:
         return
     yield f"#### {pdo.name}"
     yield ""
-    yield f"COB-ID {_both(pdo, _cob)}, transmission type {_both(pdo, _transmission)}"
+    yield f"COB-ID {_both(pdo, _cob)}, transmission type {_both(pdo, _transmission)}{_timing(pdo)}"
     yield ""
     yield "| Bits | Before | After |"
     yield "|---|---|---|"
@@ -133,6 +163,15 @@ def _pdo_table(pdo: PdoDiff) -> Iterator[str]:
     for bits in sorted(set(before) | set(after)):
         yield f"| {bits[0]}-{bits[1]} | {before.get(bits, '')} | {after.get(bits, '')} |"
     yield ""
+
+
+def _timing(pdo: PdoDiff) -> str:
+    """`, event timer `100 ms``: the timing entries either side configures."""
+    parts = []
+    for sub, (label, _, _) in TIMING_SUBS.items():
+        if any(view is not None and sub in view.timing for view in (pdo.before, pdo.after)):
+            parts.append(f", {label} {_both(pdo, lambda view, sub=sub: timing_text(sub, view.timing.get(sub)))}")
+    return "".join(parts)
 
 
 def _cob(view: PdoView) -> str:
@@ -153,11 +192,14 @@ def _both(pdo: PdoDiff, show: object) -> str:
 def _fields(view: PdoView | None) -> dict[tuple[int, int], str]:
     if view is None:
         return {}
-    return {
-        (e.bit_offset, e.bit_offset + e.bit_length - 1): (
-            f"{_code(e.identifier)} {e.data_type} ({_code(f'0x{e.index:04X} sub {e.subindex}')})"
-            if e.identifier
-            else f"dummy {e.data_type}"
-        )
-        for e in view.entries
-    }
+    return {(e.bit_offset, e.bit_offset + e.bit_length - 1): _field(e) for e in view.entries}
+
+
+def _field(entry: PdoEntryView) -> str:
+    """`` `0x6064:00` `position_actual_value` INTEGER32 ``, `dummy UNSIGNED8`, `` `0x6064:00` (no such object) ``."""
+    if is_dummy_index(entry.index):
+        return f"dummy {entry.data_type}"
+    where = _code(describe.address(entry.index, entry.subindex))
+    if entry.identifier:
+        return f"{where} {_code(entry.identifier)} {entry.data_type}"
+    return f"{where} (no such object)"

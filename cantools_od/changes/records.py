@@ -9,7 +9,7 @@ from collections import Counter
 from collections.abc import Iterator
 from enum import StrEnum
 
-from pydantic import BaseModel, ConfigDict, PrivateAttr
+from pydantic import BaseModel, ConfigDict, PrivateAttr, computed_field
 
 from ..model import Value
 from ..views.pdo import Pdo
@@ -31,11 +31,21 @@ class Impact(StrEnum):
 IMPACT_ORDER = (Impact.BREAKING, Impact.COMPATIBLE, Impact.VALUE, Impact.COSMETIC)
 
 
+class Breaks(StrEnum):
+    """Who a breaking change hurts: `--fail-on wire` and `--fail-on code` select by it."""
+
+    WIRE = "wire"
+    """A master or another node configured for the old file: COB-IDs, PDO layouts, types, access, ranges, identity."""
+    CODE = "code"
+    """Firmware generated from the old file: identifiers, storage groups, types, removed entries."""
+
+
 class Kind(StrEnum):
     """What changed. One value per kind of change; the `field` of a record says which key when several share one."""
 
     OBJECT_ADDED = "object-added"
     OBJECT_REMOVED = "object-removed"
+    OBJECT_MOVED = "object-moved"
     SUB_ADDED = "sub-added"
     SUB_REMOVED = "sub-removed"
     NAME = "name"
@@ -67,7 +77,32 @@ class Kind(StrEnum):
     PDO_REMOVED = "pdo-removed"
     PDO_COB_ID = "pdo-cob-id"
     PDO_TRANSMISSION_TYPE = "pdo-transmission-type"
+    PDO_TIMING = "pdo-timing"
+    NOT_COMPARABLE = "not-comparable"
     PDO_LAYOUT = "pdo-layout"
+
+
+_BOTH = frozenset({Breaks.WIRE, Breaks.CODE})
+# Who a breaking change of each kind hurts; kinds not listed hurt the bus only.
+_WHO: dict[Kind, frozenset[Breaks]] = {
+    Kind.OBJECT_REMOVED: _BOTH,  # generated code loses the entry; a master's SDO access to it is refused
+    Kind.SUB_REMOVED: _BOTH,
+    Kind.OBJECT_TYPE: _BOTH,  # the generated structure changes, and the sub-indices a master addresses
+    Kind.OBJECT_MOVED: _BOTH,  # a master addresses the old index; CANopenNode's OD_ENTRY_H<index> names change
+    Kind.DATA_TYPE: _BOTH,  # the C type changes, and the number of bytes on the bus
+    Kind.NAME: frozenset({Breaks.CODE}),  # a rename reaches generated identifiers only
+    Kind.IDENTIFIER: frozenset({Breaks.CODE}),
+}
+_WHO_BY_FIELD = {
+    "canopennode.storage_group": frozenset({Breaks.CODE}),  # OD_RAM.x moves to OD_PERSIST_COMM.x; stored layout
+    "canopennode.count_label": frozenset({Breaks.CODE}),
+    "canopennode.disabled": _BOTH,  # left out of the generated OD, so gone from the bus too
+}
+
+
+def who_breaks(kind: Kind, field: str) -> frozenset[Breaks]:
+    """Who a breaking change of this kind (and field) hurts."""
+    return _WHO_BY_FIELD.get(field) or _WHO.get(kind, frozenset({Breaks.WIRE}))
 
 
 class Change(BaseModel):
@@ -95,6 +130,13 @@ class Change(BaseModel):
     new_text: str = ""
     note: str = ""
 
+    @computed_field  # type: ignore[prop-decorator]
+    @property
+    def breaks(self) -> list[Breaks]:
+        """Who a breaking change hurts, `wire` and/or `code` (empty for every other impact)."""
+        who = who_breaks(self.kind, self.field) if self.impact is Impact.BREAKING else frozenset()
+        return [hurt for hurt in Breaks if hurt in who]
+
 
 class ObjectDiff(BaseModel):
     """The changes of one object, named by its new name (its old one when removed)."""
@@ -116,6 +158,8 @@ class PdoEntryView(BaseModel):
     name: str
     data_type: str
     identifier: str | None
+    exists: bool = True
+    """The mapped object (or dummy type) is in the dictionary."""
 
 
 class PdoView(BaseModel):
@@ -126,13 +170,16 @@ class PdoView(BaseModel):
     cob_id: Value | None
     transmission_type: int | None
     entries: list[PdoEntryView]
+    timing: dict[int, int] = {}
+    """Inhibit time (sub-index 3, 100 µs), event timer (5, ms), SYNC start value (6), as configured."""
     _pdo: Pdo | None = PrivateAttr(default=None)
 
     @classmethod
-    def of(cls, pdo: Pdo) -> PdoView:
+    def of(cls, pdo: Pdo, timing: dict[int, int] | None = None) -> PdoView:
         view = cls(
             cob_id=pdo.cob_id,
             transmission_type=pdo.transmission_type,
+            timing=timing or {},
             entries=[
                 PdoEntryView(
                     index=e.index,
@@ -142,6 +189,7 @@ class PdoView(BaseModel):
                     name=e.name,
                     data_type=e.data_type_name,
                     identifier=e.identifier,
+                    exists=e.exists,
                 )
                 for e in pdo.entries
             ],
@@ -201,3 +249,7 @@ class DeviceDiff(BaseModel):
     @property
     def breaking(self) -> bool:
         return any(change.impact is Impact.BREAKING for change in self.changes())
+
+    def hurts(self, who: Breaks) -> bool:
+        """A change breaks the bus (`Breaks.WIRE`) or generated code (`Breaks.CODE`)."""
+        return any(who in change.breaks for change in self.changes())

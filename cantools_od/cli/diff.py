@@ -32,10 +32,11 @@ def _fail(message: str) -> NoReturn:
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "markdown"]), default="text", show_default=True)
 @click.option(
     "--fail-on",
-    type=click.Choice(["breaking", "any", "never"]),
+    type=click.Choice(["wire", "code", "breaking", "any", "never"]),
     default="never",
     show_default=True,
-    help="Exit 1 when a breaking change (or any change) is found.",
+    help="Exit 1 when a change that breaks the bus (wire), generated code (code), either (breaking), or any change "
+    "is found.",
 )
 @click.option("--git", "git_mode", is_flag=True, help="ARGS are REV1 REV2 PATH (or REV PATH: against the work tree).")
 @node_id_option
@@ -52,11 +53,29 @@ def command(
     new_pins: str | None,
     color: bool | None,
 ) -> None:
-    """Compare OLD and NEW (EDS, DCF or JSON, in any mix) object by object, and class each change
-    as breaking, compatible, value or cosmetic. Differences of spelling only (radix, key case,
-    section order) are no changes. As a git external diff driver it takes git's 7 arguments."""
+    """Compare OLD and NEW (EDS, DCF, XDD/XDC or JSON, in any mix) object by object, and class each
+    change as breaking (for the bus, generated code or both), compatible, value or cosmetic.
+    Differences of spelling only (radix, key case, section order) are no changes. As a git external
+    diff driver it takes git's 7 arguments."""
+    try:
+        _run(args, fmt, fail_on, git_mode, node_id, (old_pins, new_pins), color)
+    except Exception as error:  # a failure of ours: one line and exit 2, never a traceback nor exit 1
+        reason = " ".join(str(error).split())[:200]
+        _fail(f"internal error: {type(error).__name__}{': ' + reason if reason else ''} (please report it)")
+
+
+def _run(
+    args: tuple[str, ...],
+    fmt: str,
+    fail_on: str,
+    git_mode: bool,
+    node_id: int | None,
+    pin_files: tuple[str | None, str | None],
+    color: bool | None,
+) -> None:
     from ..changes import compare
 
+    old_pins, new_pins = pin_files
     if git_mode:
         if len(args) not in (2, 3):
             _fail("--git takes REV1 REV2 PATH, or REV PATH")
@@ -74,8 +93,19 @@ def command(
     pins = [_explicit_pins(old_pins), _explicit_pins(new_pins)]
     result = compare(old.device, new.device, node_id, pins[0] or old.pins, pins[1] or new.pins)
     click.echo(_render(result, fmt), color=color if fmt == "text" else False)
-    found = result.breaking if fail_on == "breaking" else not result.empty if fail_on == "any" else False
-    sys.exit(EXIT_FINDINGS if found else EXIT_OK)
+    sys.exit(EXIT_FINDINGS if _found(result, fail_on) else EXIT_OK)
+
+
+def _found(result: object, fail_on: str) -> bool:
+    """Whether a change at or above `--fail-on` is in the result."""
+    from ..changes import Breaks, DeviceDiff
+
+    assert isinstance(result, DeviceDiff)
+    if fail_on in ("wire", "code"):
+        return result.hurts(Breaks(fail_on))
+    if fail_on == "breaking":
+        return result.breaking
+    return fail_on == "any" and not result.empty
 
 
 def _text_diff(args: tuple[str, ...]) -> None:
@@ -155,7 +185,10 @@ def _external_sides(args: tuple[str, ...], node_id: int | None) -> tuple[Side, S
     path, old_file, new_file = args[0], args[1], args[4]
     pins = _pins_file(pin_file_for(path))  # the temporary files git hands over have no pin file beside them
     old, new = _file_side(old_file, node_id, "-"), _file_side(new_file, node_id, "-")
-    old.device.source, new.device.source = f"a/{path}", f"b/{args[7] if len(args) == 9 else path}"
+    if old_file != NULL_DEVICE:  # git's /dev/null stays the name of the missing side of a new or deleted file
+        old.device.source = f"a/{path}"
+    if new_file != NULL_DEVICE:
+        new.device.source = f"b/{args[7] if len(args) == 9 else path}"
     return Side(old.device, pins), Side(new.device, pins)
 
 

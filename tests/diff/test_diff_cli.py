@@ -30,7 +30,7 @@ def pair(tmp_path: Path) -> tuple[Path, Path]:
     """An example and a release of it that drops an object and changes a default."""
     old, new = tmp_path / "old.eds", tmp_path / "new.eds"
     old.write_text(BASE)
-    new.write_text(set_key(drop_section(BASE, "1017"), "1005", "DefaultValue", "0x81"))
+    new.write_text(set_key(drop_section(BASE, "1017"), "2000sub2", "DefaultValue", "20"))
     return old, new
 
 
@@ -39,7 +39,7 @@ def test_text_report_is_plain_when_piped(pair: tuple[Path, Path]) -> None:
     result = run("diff", *pair)
     assert result.returncode == 0, result.stderr
     assert "\x1b[" not in result.stdout
-    assert "1 breaking, 0 compatible, 1 value, 0 cosmetic" in result.stdout
+    assert "1 breaking (1 wire, 1 code), 0 compatible, 1 value, 0 cosmetic" in result.stdout
     assert "0x1017 Producer heartbeat time" in result.stdout and "removed" in result.stdout
     assert [(p.read_bytes(), p.stat().st_mode) for p in pair] == before, "inputs must stay untouched"
     coloured = run("diff", "--color", *pair)
@@ -52,7 +52,7 @@ def test_fail_on(pair: tuple[Path, Path], tmp_path: Path) -> None:
     assert run("diff", old, new, "--fail-on", "any").returncode == 1
     assert run("diff", old, old, "--fail-on", "any").returncode == 0
     value_only = tmp_path / "value.eds"
-    value_only.write_text(set_key(BASE, "1005", "DefaultValue", "0x81"))
+    value_only.write_text(set_key(BASE, "2000sub2", "DefaultValue", "20"))
     assert run("diff", old, value_only, "--fail-on", "breaking").returncode == 0
     assert run("diff", old, value_only, "--fail-on", "any").returncode == 1
 
@@ -65,7 +65,7 @@ def test_json_report_follows_its_schema(pair: tuple[Path, Path]) -> None:
     assert report.summary.breaking == 1 and report.summary.value == 1
     schema = json.loads(schema_text())
     assert set(data) == set(schema["properties"])
-    change = report.objects[-1].changes[0]  # objects in index order: 0x1005, then 0x1017
+    change = report.objects[0].changes[0]  # objects in index order: 0x1017, then 0x2000
     assert (change.kind.value, change.impact.value, change.index) == ("object-removed", "breaking", 0x1017)
 
 
@@ -92,7 +92,7 @@ def test_markdown_pdo_table(tmp_path: Path) -> None:
     new.write_text(set_key(BASE, "1A00sub0", "DefaultValue", "2"))
     text = run("diff", old, new, "--format", "markdown").stdout
     assert "#### TPDO1" in text and "| Bits | Before | After |" in text
-    assert "| 24-39 | `read_analog_input_16_bit_analog_input_2` INTEGER16 (`0x6401 sub 2`) |  |" in text
+    assert "| 24-39 | `0x6401:02` `read_analog_input_16_bit_analog_input_2` INTEGER16 |  |" in text
 
 
 @pytest.mark.parametrize(
@@ -191,7 +191,7 @@ def test_git_external_diff_driver(repo: Path) -> None:
     (repo / "NOTES.txt").write_text("not a device description\n")
     _git(repo, "add", "-A")
     shown = _git(repo, "diff", "--cached", "-M", env=env).stdout  # a rename: git passes 9 arguments
-    assert "--- a/od/new.eds\n+++ b/od/renamed.eds" in shown and "default: 0x3E8 (1000) → 0x1F4 (500)" in shown
+    assert "--- a/od/new.eds\n+++ b/od/renamed.eds" in shown and "default: 1000 ms → 500 ms" in shown
     assert "+not a device description" in shown  # GIT_EXTERNAL_DIFF sends every file: others as a text diff
 
 
@@ -203,8 +203,69 @@ def test_git_revisions_use_the_pin_file_of_each_revision(repo: Path) -> None:
     _git(repo, "commit", "-qam", "rename")
     result = run("diff", "--git", "HEAD~1", "HEAD", "od/device.eds", "--fail-on", "breaking", cwd=repo)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "cosmetic" in result.stdout and "identifier producer_heartbeat_time stays" in result.stdout
+    words = " ".join(result.stdout.split())  # long lines wrap at 100 columns
+    assert "cosmetic" in words and "identifier producer_heartbeat_time stays" in words
     (repo / "od" / "device.ids.toml").unlink()
     _git(repo, "commit", "-qam", "unpin")
     unpinned = run("diff", "--git", "HEAD~3", "HEAD", "od/device.eds", "--fail-on", "breaking", cwd=repo)
-    assert unpinned.returncode == 1 and "identifier producer_heartbeat_time → heartbeat" in unpinned.stdout
+    assert unpinned.returncode == 1 and "identifier producer_heartbeat_time → heartbeat" in " ".join(
+        unpinned.stdout.split()
+    )
+
+
+def _invoke(*args: str | Path) -> tuple[int, str, str]:
+    """The command in-process: exit code, stdout, stderr."""
+    from click.testing import CliRunner
+
+    from cantools_od.cli import main
+
+    result = CliRunner().invoke(main, ["diff", *map(str, args)], catch_exceptions=False)
+    return result.exit_code, result.stdout, result.stderr
+
+
+@pytest.mark.parametrize(
+    ("edit", "codes"),
+    [
+        # (fail-on wire, code, breaking, any, never)
+        (lambda t: set_key(t, "2000sub2", "ParameterName", "Filter time"), (0, 1, 1, 1, 0)),  # a rename: code only
+        (lambda t: set_key(t, "2000sub2", "AccessType", "ro"), (1, 0, 1, 1, 0)),  # a write lost: wire only
+        (lambda t: set_key(t, "2000sub2", "DataType", "0x0007"), (1, 1, 1, 1, 0)),  # a type: both
+        (lambda t: set_key(t, "2000sub2", "DefaultValue", "20"), (0, 0, 0, 1, 0)),  # a value
+        (lambda t: t, (0, 0, 0, 0, 0)),
+    ],
+)
+def test_fail_on_selects_who_is_hurt(tmp_path: Path, edit: object, codes: tuple[int, ...]) -> None:
+    old, new = tmp_path / "old.eds", tmp_path / "new.eds"
+    old.write_text(BASE)
+    assert callable(edit)
+    new.write_text(edit(BASE))
+    found = tuple(_invoke(old, new, "--fail-on", level)[0] for level in ("wire", "code", "breaking", "any", "never"))
+    assert found == codes
+
+
+def test_a_new_file_passes_fail_on_breaking(tmp_path: Path) -> None:
+    """git shows an added file as /dev/null → file: every object is added, nothing breaks."""
+    new = tmp_path / "new.eds"
+    new.write_text(BASE)
+    code, out, _ = _invoke("/dev/null", new, "--fail-on", "breaking")
+    assert code == 0, out
+    assert _invoke(new, "/dev/null", "--fail-on", "code")[0] == 1  # a deleted file breaks generated code
+
+
+def test_an_internal_failure_is_one_line_and_exit_2(pair: tuple[Path, Path], monkeypatch: pytest.MonkeyPatch) -> None:
+    import cantools_od.changes
+
+    def broken(*args: object, **kwargs: object) -> None:
+        raise KeyError((4099, 0))
+
+    monkeypatch.setattr(cantools_od.changes, "compare", broken)
+    code, out, err = _invoke(*pair, "--fail-on", "any")
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and err.startswith("error: internal error: KeyError: (4099, 0)"), err
+
+
+def test_unreadable_input_is_one_line_and_exit_2(pair: tuple[Path, Path], tmp_path: Path) -> None:
+    old, _ = pair
+    for bad in (tmp_path / "missing.eds", tmp_path):
+        code, out, err = _invoke(old, bad, "--fail-on", "any")
+        assert code == 2 and out == "" and err.count("\n") == 1, err

@@ -9,7 +9,7 @@ import pytest
 from diffkit import BASE, device, diff_of, drop_section, only, set_key, summary
 
 from cantools_od import dumps, loads
-from cantools_od.changes import Impact, Kind, compare
+from cantools_od.changes import Breaks, Impact, Kind, compare, describe
 
 
 def test_the_same_file_has_no_changes() -> None:
@@ -113,25 +113,32 @@ def test_pdo_mapping_flag() -> None:
 
 
 @pytest.mark.parametrize(
-    ("key", "value", "impact"),
+    ("access", "key", "value", "impact"),
     [
-        ("LowLimit", "5", Impact.BREAKING),  # 1 → 5: narrowed
-        ("LowLimit", "0", Impact.COMPATIBLE),
-        ("HighLimit", "100", Impact.BREAKING),
-        ("HighLimit", None, Impact.COMPATIBLE),  # no bound: the type's own range
-        ("HighLimit", "65535", Impact.COMPATIBLE),
+        # a narrower range breaks a master only where it writes the entry
+        ("rw", "LowLimit", "5", Impact.BREAKING),  # 1 → 5: narrowed
+        ("wo", "HighLimit", "100", Impact.BREAKING),
+        ("ro", "LowLimit", "5", Impact.COMPATIBLE),  # a master only reads it: fewer values still read fine
+        ("const", "HighLimit", "100", Impact.COMPATIBLE),
+        # a wider range breaks a master only where it reads the entry
+        ("rw", "LowLimit", "0", Impact.BREAKING),
+        ("ro", "HighLimit", None, Impact.BREAKING),  # no bound: the type's own range
+        ("wo", "HighLimit", "65535", Impact.COMPATIBLE),  # a master only writes it: what it wrote still fits
+        ("wo", "LowLimit", "0", Impact.COMPATIBLE),
     ],
 )
-def test_limits(key: str, value: str | None, impact: Impact) -> None:
-    change = only(diff_of(set_key(BASE, "2000sub2", key, value)))
+def test_limits(access: str, key: str, value: str | None, impact: Impact) -> None:
+    edited = set_key(BASE, "2000sub2", "AccessType", access)
+    change = only(diff_of(set_key(edited, "2000sub2", key, value), edited))
     assert change.kind is (Kind.LOW_LIMIT if key == "LowLimit" else Kind.HIGH_LIMIT)
     assert change.impact is impact
+    assert change.breaks == ([Breaks.WIRE] if impact is Impact.BREAKING else [])
 
 
 def test_default_is_a_value_change() -> None:
     change = only(diff_of(set_key(BASE, "1017", "DefaultValue", "500")))
     assert (change.kind, change.impact, change.old, change.new) == (Kind.DEFAULT, Impact.VALUE, 1000, 500)
-    assert (change.old_text, change.new_text) == ("0x3E8 (1000)", "0x1F4 (500)")
+    assert (change.old_text, change.new_text) == ("1000 ms", "500 ms")  # the producer heartbeat time, decoded
 
 
 def test_nodeid_form() -> None:
@@ -232,7 +239,7 @@ def test_diff_against_canonical_and_json_forms_is_empty() -> None:
 
 
 def test_counts_and_flags() -> None:
-    result = diff_of(set_key(drop_section(BASE, "1017"), "1005", "DefaultValue", "0x81"))
+    result = diff_of(set_key(drop_section(BASE, "1017"), "2000sub2", "DefaultValue", "20"))
     assert result.counts() == {Impact.BREAKING: 1, Impact.COMPATIBLE: 0, Impact.VALUE: 1, Impact.COSMETIC: 0}
     assert result.breaking and not result.empty
 
@@ -262,3 +269,168 @@ def test_python_api_takes_paths_and_pin_files(tmp_path: Path) -> None:
     pins.write_text('[identifiers]\n"1017" = "producer_heartbeat_time"\n')
     assert only(cantools_od.diff(old, new, old_pins=pins, new_pins=pins)).impact is Impact.COSMETIC
     assert cantools_od.diff(device(), old).empty  # a Device and a path mix
+
+
+# TPDO1's entries as layout notes name them
+DI = "0x6000:01 read_input_8_bit_digital_inputs_1_to_8"
+AI1, AI2, AI3 = (f"0x6401:0{n} read_analog_input_16_bit_analog_input_{n}" for n in (1, 2, 3))
+
+
+def _layout_note(edited: str) -> str:
+    result = diff_of(edited)
+    notes = [c.note for c in result.changes() if c.kind is Kind.PDO_LAYOUT]
+    assert len(notes) == 1, [(c.kind.value, c.index, c.subindex) for c in result.changes()]
+    return notes[0]
+
+
+@pytest.mark.parametrize(
+    ("edits", "note"),
+    [
+        # TPDO1 maps 0x6000:01 (8 bits), 0x6401:01 (16), 0x6401:02 (16): 5 bytes
+        (
+            {"1A00sub0": "2"},
+            "trailing entry dropped: " + AI2 + "; length 5 bytes → 3 bytes",
+        ),
+        (
+            {"1A00sub3": "0x64010310"},
+            "source at bits 24-39: " + AI2 + " → " + AI3,
+        ),
+        (
+            {"1A00sub2": "0x64010210", "1A00sub3": "0x64010110"},
+            "reordered: 2 of 3 entries at other bits",
+        ),
+        (
+            {"1A00sub1": "0x60000110", "1A00sub0": "1"},
+            "resized " + DI + ": 8 → 16 bits; removed " + AI1 + ", " + AI2 + "; length 5 bytes → 2 bytes",
+        ),
+    ],
+)
+def test_pdo_layout_notes(edits: dict[str, str], note: str) -> None:
+    edited = BASE
+    for section, value in edits.items():
+        edited = set_key(edited, section, "DefaultValue", value)
+    assert _layout_note(edited) == note
+
+
+def test_pdo_layout_appended() -> None:
+    edited = set_key(BASE, "1A00sub0", "DefaultValue", "4")
+    edited = edited.replace(
+        "[1A01]\n",
+        "[1A00sub4]\nParameterName=Mapped object 4\nObjectType=0x7\nDataType=0x0007\n"
+        "AccessType=rw\nDefaultValue=0x64010310\nPDOMapping=0\n\n[1A01]\n",
+        1,
+    )
+    edited = set_key(edited, "1A00", "SubNumber", "5")
+    assert _layout_note(edited) == "appended " + AI3 + "; length 5 bytes → 7 bytes"
+
+
+def test_pdo_timing_is_with_the_pdo() -> None:
+    result = diff_of(set_key(set_key(BASE, "1800sub5", "DefaultValue", "500"), "1800sub3", "DefaultValue", "50"))
+    assert not result.objects  # shown with the PDO, not again under 0x1800
+    (pdo,) = result.pdos
+    shown = {(c.kind, c.index, c.subindex, c.old_text, c.new_text, c.impact) for c in pdo.changes}
+    assert shown == {
+        (Kind.PDO_TIMING, 0x1800, 3, "100 (10 ms)", "50 (5 ms)", Impact.VALUE),
+        (Kind.PDO_TIMING, 0x1800, 5, "1000 ms", "500 ms", Impact.VALUE),
+    }
+    assert pdo.after is not None and pdo.after.timing == {3: 50, 5: 500}
+
+
+@pytest.mark.parametrize(
+    ("section", "value", "old_text", "new_text", "impact"),
+    [
+        (
+            "1005",
+            "0x40000080",
+            "0x80 (consumes SYNC, CAN-ID 080h)",
+            "0x40000080 (produces SYNC, CAN-ID 080h)",
+            Impact.BREAKING,
+        ),
+        ("1016sub1", "0x000505DC", "0 (off)", "0x505DC (329180) (node 5, 1500 ms)", Impact.VALUE),
+        (
+            "1014",
+            "0x80000081",
+            "$NODEID+0x80 (CAN-ID node-ID + 080h)",
+            "0x80000081 (not valid, CAN-ID 081h)",
+            Impact.BREAKING,
+        ),
+        ("1800sub1", "0xC0000181", "", "", Impact.BREAKING),  # a PDO's COB-ID: with the PDO
+    ],
+)
+def test_values_are_decoded_where_cia301_defines_the_bits(
+    section: str, value: str, old_text: str, new_text: str, impact: Impact
+) -> None:
+    change = only(diff_of(set_key(BASE, section, "DefaultValue", value)))
+    assert change.impact is impact
+    if old_text:
+        assert (change.old_text, change.new_text) == (old_text, new_text)
+    else:
+        assert change.kind is Kind.PDO_COB_ID
+        assert change.new_text == "0xC0000181 (not valid, no RTR, CAN-ID 181h)"
+        assert change.old_text == "$NODEID+0x180 (CAN-ID node-ID + 180h)"
+    assert change.breaks == ([Breaks.WIRE] if impact is Impact.BREAKING else [])
+
+
+def test_device_type_and_identity_break_the_bus() -> None:
+    for section in ("1000", "1018sub1", "1018sub2"):
+        change = only(diff_of(set_key(BASE, section, "DefaultValue", "0x12345")))
+        assert (change.impact, change.breaks) == (Impact.BREAKING, [Breaks.WIRE]), section
+    assert only(diff_of(set_key(BASE, "1018sub3", "DefaultValue", "0x12345"))).impact is Impact.VALUE
+
+
+def test_storage_group_is_one_change_for_code() -> None:
+    """`;StorageLocation=` is the storage group: one change, breaking generated code, not again as a comment."""
+
+    def stored(group: str) -> str:
+        return BASE.replace(
+            "[2000]\nParameterName=Device settings\n",
+            f"[2000]\nParameterName=Device settings\n;StorageLocation={group}\n",
+            1,
+        )
+
+    change = only(diff_of(stored("PERSIST_COMM"), stored("RAM")))
+    assert (change.kind, change.field, change.impact, change.breaks) == (
+        Kind.CANOPENNODE,
+        "canopennode.storage_group",
+        Impact.BREAKING,
+        [Breaks.CODE],
+    )
+
+
+def test_an_object_moved_to_another_index_is_one_change() -> None:
+    moved = BASE.replace("[2000", "[2001").replace("=0x2000\n", "=0x2001\n").replace("0x20000320", "0x20010320")
+    result = diff_of(moved)
+    (obj,) = result.objects
+    change = only(result.model_copy(update={"pdos": []}))
+    assert (obj.index, change.kind, change.old, change.new) == (0x2001, Kind.OBJECT_MOVED, 0x2000, 0x2001)
+    assert change.breaks == [Breaks.WIRE, Breaks.CODE]
+    assert "moved from 0x2000 to 0x2001" in describe.sentence(change)
+    back = diff_of(BASE, moved)
+    assert [c.kind for c in back.objects[0].changes] == [Kind.OBJECT_MOVED]
+
+
+def test_an_object_added_disabled_says_so() -> None:
+    from cantools_od.model import CanopenNodeInfo
+
+    new = device()
+    new.objects[0x2000].canopennode = CanopenNodeInfo(disabled=True)
+    old = device()
+    del old.objects[0x2000]
+    change = only(compare(old, new).model_copy(update={"pdos": []}))
+    assert change.kind is Kind.OBJECT_ADDED and "disabled (CO_disabled" in change.new_text
+
+
+@pytest.mark.parametrize(
+    ("source", "title"),
+    [
+        ("HEAD~1:od/device.eds", "HEAD~1:device.eds"),  # --git REV1 REV2 PATH
+        ("v1.2.0:firmware/od/drive.xdd", "v1.2.0:drive.xdd"),
+        ("/dev/null", "/dev/null"),  # a new or deleted file in git
+        ("a/od/device.eds", "device.eds"),  # git's external diff driver
+        ("../old/device.eds", "device.eds"),
+    ],
+)
+def test_markdown_title_names_revisions(source: str, title: str) -> None:
+    from cantools_od.changes.markdown import side_name
+
+    assert side_name(source) == title

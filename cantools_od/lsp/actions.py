@@ -72,7 +72,7 @@ def code_actions(
             types.CodeAction(
                 title=f"Apply the {len(safe)} safe fix{'es' if len(safe) != 1 else ''} (lint --fix)",
                 kind=types.CodeActionKind.SourceFixAll,
-                edit=types.WorkspaceEdit(changes={uri: edits(analysis.text, new)}),
+                edit=types.WorkspaceEdit(changes={uri: one_edit(analysis.text, new)}),
             )
         )
     return actions
@@ -100,9 +100,11 @@ def formatted(uri: str, analysis: Analysis, encoding: Encoding) -> str:
 
 
 def format_edits(uri: str, analysis: Analysis, encoding: Encoding, within: types.Range | None) -> list[types.TextEdit]:
-    """fmt's changes as edits; for a range, the changes that touch it."""
-    found = edits(analysis.text, formatted(uri, analysis, encoding))
+    """fmt's changes: for the whole document one edit (the lines between the common head and tail); for a
+    range, the runs of changed lines (difflib's) that touch it."""
+    new = formatted(uri, analysis, encoding)
     if within is None:
-        return found
+        return one_edit(analysis.text, new)
+    found = edits(analysis.text, new)
     first, last = within.start.line, within.end.line
     return [e for e in found if e.range.start.line <= last and e.range.end.line >= first]

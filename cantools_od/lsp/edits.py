@@ -15,13 +15,14 @@ def _lines(text: str) -> list[str]:
 
 
 def edits(old: str, new: str) -> list[types.TextEdit]:
-    """One edit per changed run of lines (difflib's), in document order."""
+    """One edit per changed run of lines (difflib's, which skips lines too common to anchor a match), in
+    document order."""
     if old == new:
         return []
     before, after = _lines(old), _lines(new)
     lines = Lines(old)
     found = []
-    matcher = difflib.SequenceMatcher(None, before, after, autojunk=False)
+    matcher = difflib.SequenceMatcher(None, before, after)
     for tag, i1, i2, j1, j2 in matcher.get_opcodes():
         if tag == "equal":
             continue

@@ -53,7 +53,15 @@ def _device(ls: OdServer, uri: str) -> tuple[Device, Lines, Open] | None:
     return found[0].device, found[1], found[2]
 
 
-def register(server: OdServer) -> None:  # noqa: C901 - one short handler per request, wired in one place
+def register(server: OdServer) -> None:
+    _reading(server)
+    _navigation(server)
+    _editing(server)
+
+
+def _reading(server: OdServer) -> None:
+    """Hover, outline and completion."""
+
     @server.feature(types.TEXT_DOCUMENT_HOVER)
     @guarded
     def on_hover(ls: OdServer, params: types.HoverParams) -> types.Hover | None:
@@ -66,6 +74,12 @@ def register(server: OdServer) -> None:  # noqa: C901 - one short handler per re
         if text is None or spot is None:
             return None
         return types.Hover(types.MarkupContent(types.MarkupKind.Markdown, text), lines.whole_line(spot.line))
+
+    _outline_and_completion(server)
+
+
+def _navigation(server: OdServer) -> None:
+    """Definition and references."""
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
     @guarded
@@ -101,6 +115,10 @@ def register(server: OdServer) -> None:  # noqa: C901 - one short handler per re
         spot = _index(state, device).at(*lines.model(params.position))
         return [_location(uri, lines, where) for where in navigation.references(device, spot)] if spot else []
 
+
+def _editing(server: OdServer) -> None:
+    """Code actions and formatting."""
+
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION,
         types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, types.CodeActionKind.SourceFixAll]),
@@ -135,6 +153,8 @@ def register(server: OdServer) -> None:  # noqa: C901 - one short handler per re
     def on_range_formatting(ls: OdServer, params: types.DocumentRangeFormattingParams) -> list[types.TextEdit] | None:
         return _format(ls, params.text_document.uri, params.range)
 
+
+def _outline_and_completion(server: OdServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     @guarded
     def on_symbols(ls: OdServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol] | None:

@@ -163,7 +163,8 @@ async def test_range_formatting_changes_only_the_lines_asked_about(client: Langu
         )
     )
     assert ranged and all(e.range.start.line <= first <= e.range.end.line for e in ranged)
-    assert len(ranged) < len(whole or [])
+    after = apply(original, list(ranged)).splitlines()
+    assert after[first] == "DataType=0x0006" and original.count("DataType=6") > 1 and "DataType=6" in after
     close_file(client, path)
 
 

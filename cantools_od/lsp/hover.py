@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from ..model import Device, Object, ObjectKind, Variable
 from ..model.cia301 import cia402, definitions
-from ..model.cia301.cobid import EXTENDED, RTR, VALID, Cob, known_node_id
+from ..model.cia301.cobid import ALL_NODE_IDS, EXTENDED, RTR, VALID, Cob, known_node_id
 from ..model.cia301.connections import cob_entries, predefined_cob_base
-from ..model.cia301.pdo import MapEntry, decode_entry, dummy_type, is_mapping, pdos
+from ..model.cia301.pdo import MapEntry, decode_entry, dummy_type, is_dummy_index, is_mapping, pdos
 from ..model.cia301.slots import as_int
 from ..model.datatypes import standard_type
 from ..model.values import NodeIdExpr
@@ -117,7 +117,7 @@ def mapping_entry(device: Device, owner: Object, subindex: int) -> list[str] | N
     if entry is None:
         where = "beyond the number of mapped objects (sub0): not in use"
     lines = [f"Mapping entry 0x{value:08X}: index {index:04X}h, sub-index {sub:X}h, {bits} bits; {where}."]
-    if index < 0x1000:
+    if is_dummy_index(index):
         dtype = dummy_type(device, index)
         lines.append(f"A dummy entry of type {dtype.name if dtype else f'{index:04X}h'}: the receiver skips its bits.")
         return lines
@@ -144,9 +144,9 @@ def cob_id(device: Device, owner: Object, subindex: int, node_id: int | None) ->
     if cob is None:
         return None
     value = cob.at(node_id or 0)
-    can_id = value & (0x1FFFFFFF if value & EXTENDED else 0x7FF)
+    extended, can_id = cob.can_id(node_id or 0)
     lines = [
-        f"COB-ID of {cob.role}: CAN-ID {can_id:X}h{' (29-bit)' if value & EXTENDED else ''}"
+        f"COB-ID of {cob.role}: CAN-ID {can_id:X}h{' (29-bit)' if extended else ''}"
         + (f" for node-ID {node_id}" if cob.symbolic and node_id else ""),
         "",
         f"- bit 31 (valid): {'1, not valid (off)' if value & VALID else '0, valid'}",
@@ -156,7 +156,7 @@ def cob_id(device: Device, owner: Object, subindex: int, node_id: int | None) ->
     base = predefined_cob_base(owner.index, subindex)
     if cob.symbolic:
         lines.append(f"- follows the node-ID: `{cob.written}`")
-    elif base is not None and 1 <= can_id - base <= 127:
+    elif base is not None and can_id - base in ALL_NODE_IDS:
         lines.append(
             f"- fixed: the pre-defined identifier of node-ID {can_id - base} ({base:X}h + {can_id - base});"
             f" it does not follow the node-ID (write `$NODEID+0x{base:X}` for that)"

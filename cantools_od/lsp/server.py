@@ -14,6 +14,7 @@ from pygls.lsp.server import LanguageServer
 
 from .. import __version__
 from ..lint import LintOptions
+from ..model.cia301.cobid import ALL_NODE_IDS
 from .diagnostics import diagnostics
 from .document import Analysis, Encoding, analyse, path_of
 from .positions import Lines
@@ -51,7 +52,7 @@ class OdServer(LanguageServer):
         profile = settings.get("profile")
         self.options = LintOptions(
             can_fd=settings.get("canFd") is True,
-            node_id=node_id if isinstance(node_id, int) and 1 <= node_id <= 127 else None,
+            node_id=node_id if isinstance(node_id, int) and node_id in ALL_NODE_IDS else None,
             profile=profile if profile == "canopennode" else None,
         )
         url = settings.get("rulesUrl")

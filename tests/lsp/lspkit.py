@@ -96,15 +96,23 @@ class Lint:
     """`cantools-od lint --format json FILES` running beside the server in the files' folder (where the server
     looks for configuration), read by a thread of its own so that it never waits on a full pipe."""
 
-    def __init__(self, files: list[Path], *args: str) -> None:
-        command = [*cli_command(), "lint", "--format", "json", *args, *(path.name for path in files)]
+    def __init__(self, files: list[Path], *args: str, command: str = "lint") -> None:
+        options = ["--format", "json"] if command == "lint" else []
+        command_line = [*cli_command(), command, *options, *args, *(path.name for path in files)]
         self.done: list[subprocess.CompletedProcess[str]] = []
-        run = lambda: self.done.append(subprocess.run(command, cwd=files[0].parent, capture_output=True, text=True))  # noqa: E731
+
+        def run() -> None:
+            self.done.append(subprocess.run(command_line, cwd=files[0].parent, capture_output=True, text=True))
+
         self.thread = threading.Thread(target=run)
         self.thread.start()
 
-    def result(self) -> list[dict[str, object]]:
+    def wait(self) -> subprocess.CompletedProcess[str]:
         self.thread.join()
+        return self.done[0]
+
+    def result(self) -> list[dict[str, object]]:
+        self.wait()
         process = self.done[0]
         assert process.returncode in (0, 1), process.stderr
         found: list[dict[str, object]] = json.loads(process.stdout)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
@@ -21,6 +22,8 @@ from lspkit import (
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
+from cantools_od.lsp.edits import apply
+
 from support import EXAMPLES, corpus_devices
 
 pytestmark = pytest.mark.asyncio(loop_scope="module")
@@ -39,11 +42,68 @@ def _xdd_files() -> list[Path]:
     return sorted(p for p in XDD_CORPUS.iterdir() if p.suffix.lower() in (".xdd", ".xdc", ".xpd"))
 
 
-async def _sweep(client: LanguageClient, files: list[Path]) -> None:
-    lint = Lint(files)  # lint runs beside the server: one process each for the whole sweep
-    got = {}
+def _mapping_entries(path: Path) -> list[tuple[int, int, int, int]]:
+    """(line, column) from 1 of each PDO mapping entry's value, with the index and sub-index it maps."""
+    from cantools_od.api import load
+    from cantools_od.lint.rules import Context, LintOptions
+    from cantools_od.model.cia301.pdo import pdos
+
+    device = load(path)
+    at = Context(device, LintOptions())
+    found = []
+    for pdo in pdos(device):
+        for entry in pdo.mapped():
+            where = entry.slot.location(at)
+            if not entry.is_dummy and entry.index in device.objects and not entry.slot.implicit:
+                found.append((where.line, where.column, entry.index, entry.subindex))
+    return found
+
+
+def _names_object(line: str, index: int, subindex: int) -> bool:
+    """The line is the header of the mapped object's section, or of its sub-object's: EDS or XDD."""
+    text = line.strip().lower()
+    eds = (f"[{index:04x}]", f"[{index:04x}sub{subindex:x}]")
+    xdd = f'index="{index:04x}"' in text or f'subindex="{subindex:02x}"' in text
+    return text in eds or (text.startswith("<canopen") and xdd)
+
+
+async def _definitions(client: LanguageClient, path: Path, text: str) -> list[str]:
+    """Where definition goes from each mapping entry that maps an object of the file: wrong landings."""
+    lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    document = types.TextDocumentIdentifier(path.resolve().as_uri())
+    wrong = []
+    for line, column, index, subindex in _mapping_entries(path):
+        position = types.Position(line - 1, column - 1)
+        found = await client.text_document_definition_async(types.DefinitionParams(document, position))
+        target = found if isinstance(found, types.Location) else None
+        if target is None or not _names_object(lines[target.range.start.line], index, subindex):
+            wrong.append(
+                f"{path.name}:{line}: {index:04X}sub{subindex:X} -> {target.range.start.line + 1 if target else None}"
+            )
+    return wrong
+
+
+async def _formatted(client: LanguageClient, path: Path, text: str) -> str:
+    document = types.TextDocumentIdentifier(path.resolve().as_uri())
+    found = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(document, types.FormattingOptions(4, True))
+    )
+    return apply(text, list(found or []))
+
+
+async def _sweep(client: LanguageClient, files: list[Path], copies: Path) -> None:
+    """Open each file once: its diagnostics are lint's, formatting gives what fmt writes, and each mapping
+    entry's definition lands on the header of the object it maps."""
+    lint = Lint(files)  # lint and fmt run beside the server: one process each for the whole sweep
     for path in files:
-        got[path.name] = (text_of(path), seen(await open_file(client, path)))
+        shutil.copyfile(path, copies / path.name)
+    fmt = Lint([copies / path.name for path in files], command="fmt")
+    got, formatted, misplaced = {}, {}, []
+    for path in files:
+        text = text_of(path)
+        got[path.name] = (text, seen(await open_file(client, path)))
+        misplaced += await _definitions(client, path, text)
+        formatted[path.name] = await _formatted(client, path, text)
         close_file(client, path)
     by_file: dict[str, list[dict[str, object]]] = {}
     for finding in lint.result():
@@ -54,20 +114,24 @@ async def _sweep(client: LanguageClient, files: list[Path]) -> None:
         if sorted(diagnostics) != sorted(expected(by_file.get(name, []), text))
     ]
     assert not wrong, f"diagnostics differ from lint for {len(wrong)} of {len(files)} files: {wrong[:5]}"
+    fmt.wait()
+    unlike = [name for name, text in formatted.items() if text != text_of(copies / name)]
+    assert not unlike, f"formatting differs from fmt for {len(unlike)} of {len(files)} files: {unlike[:5]}"
+    assert not misplaced, f"{len(misplaced)} definitions miss their object: {misplaced[:5]}"
 
 
-async def test_every_corpus_eds_has_lints_findings(client: LanguageClient) -> None:
+async def test_every_corpus_eds_as_lint_fmt_and_definitions_say(client: LanguageClient, tmp_path: Path) -> None:
     files = corpus_devices()
     if not files:
         pytest.skip("../shared/eds-corpus is absent")
-    await _sweep(client, files)
+    await _sweep(client, files, tmp_path)
 
 
-async def test_every_corpus_xdd_has_lints_findings(client: LanguageClient) -> None:
+async def test_every_corpus_xdd_as_lint_fmt_and_definitions_say(client: LanguageClient, tmp_path: Path) -> None:
     files = _xdd_files()
     if not files:
         pytest.skip("../shared/eds-corpus/xdd is absent")
-    await _sweep(client, files)
+    await _sweep(client, files, tmp_path)
 
 
 def _change(client: LanguageClient, path: Path, version: int, start: tuple[int, int], end: tuple[int, int], text: str):

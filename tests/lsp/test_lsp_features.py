@@ -21,7 +21,7 @@ DRIVE = EXAMPLES / "cia402_drive.eds"
 
 @pytest_lsp.fixture(config=SERVER, scope="module")
 async def client(lsp_client: LanguageClient):
-    await start(lsp_client, {"nodeId": 5})
+    await start(lsp_client, {"nodeId": 5, "rulesUrl": "https://example.invalid/docs/rules.md"})
     yield
     await lsp_client.shutdown_session()
 
@@ -99,6 +99,10 @@ async def test_a_quick_fix_is_the_edit_lint_fix_makes(client: LanguageClient, tm
     diagnostics = await open_file(client, path)
     counted = [d for d in diagnostics if d.data and d.data.get("safe")]
     assert counted, "the example has a finding with a safe fix"
+    link = counted[0].code_description
+    assert link is not None and link.href.startswith(
+        f"https://example.invalid/docs/rules.md#{str(counted[0].code).lower()}-"
+    )
     document = types.TextDocumentIdentifier(path.resolve().as_uri())
     actions = await client.text_document_code_action_async(
         types.CodeActionParams(document, counted[0].range, types.CodeActionContext(diagnostics=counted[:1]))

@@ -215,3 +215,33 @@ def test_the_command_answers_help_in_one_process() -> None:
 
     result = subprocess.run([*cli_command(), "lsp", "--help"], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0 and "Language Server Protocol" in result.stdout
+
+
+async def test_an_xdd_unique_id_ref_goes_to_its_parameter_and_back(client: LanguageClient) -> None:
+    from lspkit import XDD_CORPUS
+
+    path = XDD_CORPUS / "canopendemo__demoDevice.xdd"
+    if not path.is_file():
+        pytest.skip("../shared/eds-corpus/xdd is absent")
+    await open_file(client, path)
+    lines = text_of(path).splitlines()
+    document = types.TextDocumentIdentifier(path.resolve().as_uri())
+    users = [(n, line) for n, line in enumerate(lines) if "<CANopenObject " in line and 'uniqueIDRef="' in line]
+    assert users
+    for number, line in users[:25]:
+        ref = line.split('uniqueIDRef="', 1)[1].split('"', 1)[0]
+        column = line.index('uniqueIDRef="') + 3
+        found = await client.text_document_definition_async(
+            types.DefinitionParams(document, types.Position(number, column))
+        )
+        assert isinstance(found, types.Location), ref
+        assert f'uniqueID="{ref}"' in lines[found.range.start.line], ref
+        back = await client.text_document_references_async(
+            types.ReferenceParams(
+                text_document=document,
+                position=types.Position(found.range.start.line, lines[found.range.start.line].index("uniqueID=") + 2),
+                context=types.ReferenceContext(include_declaration=False),
+            )
+        )
+        assert number in {where.range.start.line for where in back or []}, ref
+    close_file(client, path)

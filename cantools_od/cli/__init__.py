@@ -21,6 +21,7 @@ COMMANDS = {
     "gen": ("gen", "Generate C, Rust, Python and Markdown from an object dictionary."),
     "ids": ("ids", "Print the identifiers generated code uses, as a pin file."),
     "lint": ("lint", "Check EDS/DCF files against CiA 306/301 and PDO rules."),
+    "lsp": ("lsp", "Language server for editors: lint, hover, definitions, fixes, formatting."),
     "rules": ("rules", "List the lint rules, or explain one."),
     "cmake-dir": ("cmake_dir", "Print the folder of the CMake package."),
     "diff": ("diff", "Show what changed between two device descriptions, and what it breaks."),

@@ -1,0 +1,148 @@
+"""The server's wiring: documents in, analyses out, one feature module per kind of request."""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+import sys
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from typing import Any
+
+from lsprotocol import types
+from pygls.lsp.server import LanguageServer
+
+from .. import __version__
+from ..lint import LintOptions
+from ..model.cia301.cobid import ALL_NODE_IDS
+from .diagnostics import diagnostics
+from .document import Analysis, Encoding, analyse, path_of
+from .positions import Lines
+
+DEBOUNCE = 0.1
+"""Seconds of quiet after an edit before the document is read and linted again."""
+
+
+@dataclass
+class Open:
+    """An open document: its encoding on disk, its last analysis and the re-check waiting to start."""
+
+    encoding: Encoding
+    analysis: Analysis | None = None
+    lines: Lines | None = None
+    pending: asyncio.TimerHandle | None = None
+    cache: dict[str, Any] = field(default_factory=dict)
+    """What the features derive from the analysis (indexes of lines), dropped with it."""
+
+
+class OdServer(LanguageServer):
+    def __init__(self) -> None:
+        super().__init__("cantools-od", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        self.open: dict[str, Open] = {}
+        self.options = LintOptions()
+        self.rules_url: str | None = None
+        self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="lint")
+        self.tasks: set[asyncio.Task[None]] = set()
+
+    def configure(self, settings: object) -> None:
+        """initializationOptions: {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "..."}."""
+        if not isinstance(settings, dict):
+            return
+        node_id = settings.get("nodeId")
+        profile = settings.get("profile")
+        self.options = LintOptions(
+            can_fd=settings.get("canFd") is True,
+            node_id=node_id if isinstance(node_id, int) and node_id in ALL_NODE_IDS else None,
+            profile=profile if profile == "canopennode" else None,
+        )
+        url = settings.get("rulesUrl")
+        self.rules_url = url if isinstance(url, str) and url else None
+
+    def text(self, uri: str) -> str:
+        return self.workspace.get_text_document(uri).source
+
+    def current(self, uri: str) -> tuple[Analysis, Lines, Open] | None:
+        """The last analysis of an open document, with its lines."""
+        state = self.open.get(uri)
+        if state is None or state.analysis is None or state.lines is None:
+            return None
+        return state.analysis, state.lines, state
+
+    def schedule(self, uri: str, delay: float) -> None:
+        state = self.open.get(uri)
+        if state is None:
+            return
+        if state.pending is not None:
+            state.pending.cancel()
+        state.pending = asyncio.get_running_loop().call_later(delay, self._start_check, uri)
+
+    def _start_check(self, uri: str) -> None:
+        task = asyncio.get_running_loop().create_task(self.check(uri))
+        self.tasks.add(task)  # the loop keeps only a weak reference to a task
+        task.add_done_callback(self.tasks.discard)
+
+    async def check(self, uri: str) -> None:
+        """Read and lint the document's current text in the worker, then publish, unless it changed meanwhile."""
+        state = self.open.get(uri)
+        if state is None:
+            return
+        state.pending = None
+        document = self.workspace.get_text_document(uri)
+        text, version = document.source, document.version
+        loop = asyncio.get_running_loop()
+        try:
+            analysis = await loop.run_in_executor(
+                self.worker, analyse, uri, text, version, state.encoding, self.options
+            )
+        except Exception as error:  # a bug must not stop the server: say it in one line
+            analysis = Analysis(
+                version, text, None, refusal=("LNT001", f"cannot check: {type(error).__name__}: {error}")
+            )
+            print(f"cantools-od lsp: {uri}: {type(error).__name__}: {error}", file=sys.stderr)
+        if self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
+            return
+        state.analysis, state.lines, state.cache = analysis, Lines(text), {}
+        self.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri, diagnostics(analysis, state.lines, self.rules_url), version)
+        )
+
+
+def build() -> OdServer:
+    server = OdServer()
+
+    @server.feature(types.INITIALIZE)
+    def initialize(ls: OdServer, params: types.InitializeParams) -> None:
+        ls.configure(params.initialization_options)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
+    def did_open(ls: OdServer, params: types.DidOpenTextDocumentParams) -> None:
+        uri = params.text_document.uri
+        ls.open[uri] = Open(Encoding.of_file(path_of(uri)))
+        ls.schedule(uri, 0)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
+    def did_change(ls: OdServer, params: types.DidChangeTextDocumentParams) -> None:
+        ls.schedule(params.text_document.uri, DEBOUNCE)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
+    def did_save(ls: OdServer, params: types.DidSaveTextDocumentParams) -> None:
+        ls.schedule(params.text_document.uri, 0)  # the configuration beside it may have changed
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
+    def did_close(ls: OdServer, params: types.DidCloseTextDocumentParams) -> None:
+        uri = params.text_document.uri
+        state = ls.open.pop(uri, None)
+        if state is not None and state.pending is not None:
+            state.pending.cancel()
+        ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, []))
+
+    from . import features
+
+    features.register(server)
+    return server
+
+
+def serve() -> None:
+    """Serve on stdin/stdout until the client says exit."""
+    logging.basicConfig(level=logging.ERROR, stream=sys.stderr, format="cantools-od lsp: %(message)s")
+    build().start_io()

@@ -72,6 +72,7 @@ class Signal:
     dtype: DataType | None
     name: str
     dummy: bool = False
+    unit: str = ""
 
 
 @dataclass
@@ -258,6 +259,14 @@ def _plan_slave(
     elif plan.writes:
         plan.configuration_file = os.path.join(dcf_path, slave.name + ".bin")
     return plan
+
+
+def device_pdos(device: Device, node_id: int, name: str = "device") -> list[PlannedPdo]:
+    """A device's PDOs as its description configures them (ParameterValue, else DefaultValue)."""
+    from .model import Slave as SlaveConfig
+
+    plan = SlavePlan(SlaveConfig(name=name, dcf=device.source), device, node_id)
+    return _final_pdos(_Slave(plan, device.source, parameter_values=False))
 
 
 def _parameter_values(state: _Slave) -> list[Write]:

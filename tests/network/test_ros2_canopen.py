@@ -157,6 +157,8 @@ def test_dcfgen_fails_alone_where_we_work(checkout: Path, tmp_path: Path) -> Non
     if not tool.exists() or shutil.which("git") is None:
         pytest.skip("dcfgen is not installed")
     (tmp_path / "d").mkdir()
-    theirs = subprocess.run([str(tool), "-d", str(tmp_path / "d"), "-rS", str(bus)], capture_output=True, text=True, cwd=bus.parent)
+    theirs = subprocess.run(
+        [str(tool), "-d", str(tmp_path / "d"), "-rS", str(bus)], capture_output=True, text=True, cwd=bus.parent
+    )
     assert theirs.returncode != 0 and "Traceback" in theirs.stderr
     assert ours(bus, tmp_path / "o").returncode == 0

@@ -1,0 +1,134 @@
+"""Bus load: how much of the bus a planned network's frames take, in the worst case.
+
+A classical CAN data frame (ISO 11898-1) has 34 bits (11-bit identifier) or 54 bits (29-bit) before
+its data that are subject to bit stuffing, then 8 bits per data byte, then CRC delimiter, ACK slot,
+ACK delimiter, end of frame and intermission (13 bits) that are not. In the worst case a stuff bit
+follows every 4 bits after the first of the stuffed part: an 8-byte frame takes 135 bit times
+(11-bit identifier) or 160 (29-bit).
+
+How often each frame is sent follows its transmission type: 1-240 every n-th SYNC, 0 at most once
+per SYNC, 254/255 on events, as often as the inhibit time allows (else every event timer period;
+with neither the rate is unknown and the PDO is listed as not counted), 252/253 only on request
+(not counted). SYNC is sent every `sync_period` µs, heartbeats every producer time.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..model.cia301.cobid import EXTENDED, HEARTBEAT_BASE, SYNC_ID
+from ..model.cia301.objects import RX, TX
+from .plan import NetworkPlan, PlannedPdo
+
+STUFFED_BITS = {False: 34, True: 54}  # SOF, arbitration, control and CRC bits ahead of/after the data, stuffed
+UNSTUFFED_BITS = 13  # CRC delimiter, ACK slot, ACK delimiter, EOF (7), intermission (3)
+SYNC_LAST = 240
+ACYCLIC_SYNC = 0
+RTR_ONLY = (252, 253)
+BIT_RATES = (10, 20, 50, 125, 250, 500, 800, 1000)  # kbit/s, CiA 301's
+
+
+def frame_bits(data_bytes: int, extended: bool = False) -> int:
+    """Worst-case bit times of a classical CAN data frame, stuff bits included."""
+    stuffed = STUFFED_BITS[extended] + 8 * data_bytes
+    return stuffed + (stuffed - 1) // 4 + UNSTUFFED_BITS
+
+
+@dataclass(frozen=True)
+class Frame:
+    name: str
+    bits: int
+    per_second: float
+    per_sync: float  # frames in the worst SYNC period
+    note: str = ""
+
+
+@dataclass
+class Load:
+    file: str
+    bit_rate: int  # kbit/s
+    sync_period: int  # µs, 0: no SYNC
+    frames: list[Frame] = field(default_factory=list)
+    not_counted: list[str] = field(default_factory=list)
+
+    def percent_per_second(self, bit_rate: int | None = None) -> float:
+        rate = (bit_rate or self.bit_rate) * 1000
+        return 100.0 * sum(frame.bits * frame.per_second for frame in self.frames) / rate
+
+    def percent_per_sync(self, bit_rate: int | None = None) -> float:
+        if not self.sync_period:
+            return 0.0
+        rate = (bit_rate or self.bit_rate) * 1000
+        busy = sum(frame.bits * frame.per_sync for frame in self.frames) / rate
+        return 100.0 * busy / (self.sync_period / 1e6)
+
+    @property
+    def peak_percent(self) -> float:
+        return max(self.percent_per_second(), self.percent_per_sync())
+
+
+def _pdo_frame(pdo: PlannedPdo, who: str, sync_hz: float) -> Frame | str:
+    """The PDO's frame and rate, or why it is not counted."""
+    name = f"{who} {pdo.name} ({pdo.cob_id & 0x1FFFFFFF:03X}h)"
+    bits = frame_bits((pdo.bits + 7) // 8, bool(pdo.cob_id & EXTENDED))
+    kind = pdo.transmission
+    if kind <= SYNC_LAST:
+        if not sync_hz:
+            return f"{name}: synchronous, but the master sends no SYNC"
+        every = 1 if kind == ACYCLIC_SYNC else kind
+        return Frame(
+            name, bits, sync_hz / every, 1.0, "acyclic, at most every SYNC" if kind == 0 else f"every {every}. SYNC"
+        )
+    if kind in RTR_ONLY:
+        return f"{name}: sent on request (RTR) only"
+    if pdo.direction == TX and pdo.inhibit_time:
+        return Frame(name, bits, 10_000 / pdo.inhibit_time, 0.0, f"events, inhibit time {pdo.inhibit_time * 100} µs")
+    if pdo.direction == TX and pdo.event_timer:
+        return Frame(name, bits, 1000 / pdo.event_timer, 0.0, f"event timer {pdo.event_timer} ms")
+    return f"{name}: event-driven without event timer or inhibit time: its rate is the application's"
+
+
+def bus_load(plan: NetworkPlan) -> Load:
+    master = plan.master
+    load = Load(plan.network.file, master.baudrate, master.sync_period)
+    sync_hz = 1e6 / master.sync_period if master.sync_period else 0.0
+    if sync_hz:
+        load.frames.append(
+            Frame(f"master SYNC ({SYNC_ID:03X}h)", frame_bits(0), sync_hz, 1.0, f"every {master.sync_period} µs")
+        )
+    if master.heartbeat_producer:
+        beat = 1000 / master.heartbeat_producer
+        load.frames.append(Frame("master heartbeat", frame_bits(1), beat, 0.0, f"every {master.heartbeat_producer} ms"))
+    for slave in plan.slaves:
+        name = slave.slave.name
+        for direction, who in ((TX, name), (RX, f"master → {name}")):
+            for pdo in slave.active(direction):
+                result = _pdo_frame(pdo, who, sync_hz)
+                if isinstance(result, str):
+                    load.not_counted.append(result)
+                else:
+                    load.frames.append(result)
+        if slave.heartbeat_producer:
+            beat = 1000 / slave.heartbeat_producer
+            label = f"{name} heartbeat ({HEARTBEAT_BASE + slave.node_id:03X}h)"
+            load.frames.append(Frame(label, frame_bits(1), beat, 0.0, f"every {slave.heartbeat_producer} ms"))
+    return load
+
+
+def format_load(load: Load, threshold: float) -> str:
+    lines = [f"{load.file}: bus load at {load.bit_rate} kbit/s (worst case, stuff bits included)"]
+    width = max([len(frame.name) for frame in load.frames] + [5])
+    lines.append(f"  {'frame':<{width}}  bits  frames/s  when")
+    for frame in load.frames:
+        lines.append(f"  {frame.name:<{width}}  {frame.bits:>4}  {frame.per_second:>8.1f}  {frame.note}")
+    for reason in load.not_counted:
+        lines.append(f"  not counted: {reason}")
+    per_second = load.percent_per_second()
+    lines.append(f"  load per second: {per_second:.1f} %")
+    if load.sync_period:
+        lines.append(f"  load in the worst SYNC period ({load.sync_period} µs): {load.percent_per_sync():.1f} %")
+    others = ", ".join(f"{rate} kbit/s {load.percent_per_second(rate):.1f} %" for rate in BIT_RATES)
+    lines.append(f"  per second at each bit rate: {others}")
+    if load.peak_percent > threshold:
+        lines.append(f"{load.file}: warning: bus load {load.peak_percent:.1f} % is above {threshold:g} %")
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,153 @@
+"""`cantools-od network` as users run it: hostile bus descriptions, refusals in one line, all or nothing,
+the network checks at file:line, bus load against hand-computed frames."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from cantools_od.model.cia301.master import read_concise_dcf
+from cantools_od.network.load import frame_bits
+
+from support import EXAMPLES, cli_command
+
+BUS = """\
+options:
+  dcf_path: "@INSTALL@"
+master:
+  node_id: 1
+  sync_period: 10000
+drive:
+  node_id: 2
+  dcf: cia402_drive.eds
+  tpdo:
+    1:
+      cob_id: auto
+      transmission: 1
+      mapping:
+        - {index: 0x6041, sub_index: 0}
+        - {index: 0x6064, sub_index: 0}
+  rpdo:
+    1:
+      cob_id: auto
+      mapping:
+        - {index: 0x6040, sub_index: 0}
+  sdo:
+    - {index: 0x6060, sub_index: 0, value: 1}
+io:
+  node_id: 3
+  dcf: io_device.eds
+"""
+
+
+def run(*args: str | Path, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([*cli_command(), "network", *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=120)
+
+
+@pytest.fixture
+def folder(tmp_path: Path) -> Path:
+    for name in ("cia402_drive.eds", "io_device.eds"):
+        shutil.copy(EXAMPLES / name, tmp_path / name)
+    (tmp_path / "bus.yml").write_text(BUS)
+    return tmp_path
+
+
+def test_generates_master_and_concise_dcfs(folder: Path) -> None:
+    before = {p.name: (p.read_bytes(), p.stat().st_mode) for p in folder.iterdir()}
+    result = run(folder / "bus.yml", "-o", folder / "out", "--define", "INSTALL=/opt/cfg")
+    assert result.returncode == 0, result.stderr
+    assert {p.name: (p.read_bytes(), p.stat().st_mode) for p in folder.iterdir() if p.is_file()} == before
+    writes = read_concise_dcf((folder / "out" / "drive.bin").read_bytes())
+    # TPDO1: disable (COB-ID with bit 31), transmission type, mapping 0, two entries, count, enable; then the sdo list
+    assert writes[0] == (0x1400, 1, (0x80000202).to_bytes(4, "little"))  # RPDOs first, as dcfgen
+    assert (0x1800, 1, (0x80000182).to_bytes(4, "little")) in writes
+    assert (0x1A00, 1, (0x60410010).to_bytes(4, "little")) in writes
+    assert (0x1A00, 2, (0x60640020).to_bytes(4, "little")) in writes
+    assert writes[-1] == (0x6060, 0, b"\x01")
+    master = (folder / "out" / "master.dcf").read_text()
+    assert "UploadFile=/opt/cfg/drive.bin" in master and "DefaultValue=0x00000182" in master
+    assert (folder / "out" / "drive.dcf").is_file() and (folder / "out" / "io.dcf").is_file()
+    assert subprocess.run([*cli_command(), "lint", str(folder / "out" / "drive.dcf")], capture_output=True).returncode == 0
+
+
+@pytest.mark.parametrize(
+    ("edit", "message"),
+    [
+        (("  sync_period: 10000", "  sync_periode: 10000"), "bus.yml:5: error: unknown key 'sync_periode' in master; did you mean sync_period"),
+        (("cob_id: auto\n      transmission", "cob_id: auto\n      transmision"), "bus.yml:12: error: unknown key 'transmision' in drive.tpdo.1; did you mean transmission"),
+        (("value: 1}", "value: 300}"), "bus.yml:22: error: drive: 6060sub0 is INTEGER8: 300 is out of its range -128..127"),
+        (("index: 0x6060", "index: 0x6F60"), "bus.yml:22: error: drive: object 6F60sub0 does not exist in cia402_drive.eds"),
+        (("node_id: 3", "node_id: 200"), "bus.yml:24: error: io: node_id 200 is not 1-127"),
+        (("dcf: io_device.eds", "dcf: nowhere.eds"), "bus.yml:25: error: io: dcf 'nowhere.eds' is not in"),
+        (("  node_id: 2\n", "  node_id: 2\n  node_id: 4\n"), "bus.yml:8: error: not YAML: key 'node_id' written twice"),
+        (("master:\n", "master: [\n"), "error: not YAML"),
+    ],
+)
+def test_refusals_are_one_line(folder: Path, edit: tuple[str, str], message: str) -> None:
+    text = BUS.replace(*edit)
+    assert text != BUS
+    (folder / "bus.yml").write_text(text)
+    result = run(folder / "bus.yml", "-o", folder / "out", "--define", "INSTALL=/x", cwd=folder)
+    assert result.returncode == 2 and result.stderr.count("\n") == 1, result.stderr
+    assert message in result.stderr and "Traceback" not in result.stderr
+    assert not (folder / "out").exists()
+
+
+def test_placeholder_needs_a_define(folder: Path) -> None:
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    assert result.returncode == 2 and result.stderr == "bus.yml:2: error: @INSTALL@ is not defined: give --define INSTALL=VALUE\n"
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
+def test_all_or_nothing(folder: Path) -> None:
+    out = folder / "out"
+    out.mkdir()
+    (out / "master.dcf").write_text("old")
+    (out / "drive.bin").mkdir()  # a folder where a file must go: nothing is written
+    result = run(folder / "bus.yml", "-o", out, "--define", "INSTALL=/x")
+    assert result.returncode == 2 and (out / "master.dcf").read_text() == "old"
+
+
+def test_collision_unfed_and_length_mismatch_at_their_lines(folder: Path) -> None:
+    bus = BUS.replace("  sdo:\n", "    2:\n      cob_id: 0x183\n      mapping:\n        - {index: 0x6040, sub_index: 0}\n  sdo:\n")
+    bus += "  rpdo:\n    1:\n      cob_id: 0x182\n"
+    (folder / "bus.yml").write_text(bus)
+    result = run(folder / "bus.yml", "-o", folder / "out", "--define", "INSTALL=/x")
+    assert result.returncode == 1 and not (folder / "out").exists()
+    lines = result.stderr.splitlines()
+    collision = ":32:1: error: the master: its mirror of io's RPDO1 sends CAN-ID 182h, which drive (TPDO1) sends too"
+    assert any(collision in line for line in lines), lines
+    assert any(":22:1: error: drive: RPDO2 maps 16 bits, but io's TPDO1 sends 40 bits [COB011]" in line for line in lines)
+
+
+def test_unfed_rpdo_warned(folder: Path) -> None:
+    bus = BUS.replace("  sdo:\n", "    2:\n      cob_id: 0x383\n      mapping:\n        - {index: 0x6040, sub_index: 0}\n  sdo:\n")
+    (folder / "bus.yml").write_text(bus)
+    result = run(folder / "bus.yml", "-o", folder / "out", "--define", "INSTALL=/x")
+    assert result.returncode == 0, result.stderr
+    assert ":22:1: warning: drive: RPDO2 listens to CAN-ID 383h (io's TPDO3), which io does not send" in result.stderr
+
+
+def test_frame_bits_by_hand() -> None:
+    # 11-bit identifier: 34 stuffed bits + 8 per byte, a stuff bit per 4 after the first, 13 unstuffed
+    assert [frame_bits(n) for n in (0, 1, 3, 8)] == [55, 65, 85, 135]
+    assert frame_bits(8, extended=True) == 160
+
+
+def test_load_report(folder: Path) -> None:
+    result = run(folder / "bus.yml", "--load", "--define", "INSTALL=/x")
+    assert result.returncode == 0, result.stderr
+    # TPDO1 maps 16 + 32 bits: 6 bytes, 34 + 48 stuffed bits, 20 stuff bits, 13 more: 115 bit times
+    assert "drive TPDO1 (182h)            115     100.0  every 1. SYNC" in result.stdout
+    # per second: SYNC 55*100, drive TPDO1 115*100, TPDO2 135*100, master's RPDO2 115*100, heartbeats 65*2 + 65*1,
+    # io TPDO1 105*100 (inhibit 10 ms), TPDO2 135*200 (inhibit 5 ms): 79695 bits of 1000000
+    assert "load per second: 8.0 %" in result.stdout
+    # one SYNC period of 10 ms: SYNC 55 + 115 + 135 + 115 bits = 420 µs
+    assert "load in the worst SYNC period (10000 µs): 4.2 %" in result.stdout
+    assert "not counted: master → io RPDO1 (203h): event-driven" in result.stdout
+    high = run(folder / "bus.yml", "--load", "--define", "INSTALL=/x", "--threshold", "5")
+    assert high.returncode == 1 and "warning: bus load 8.0 % is above 5 %" in high.stdout

@@ -262,6 +262,7 @@ def lint_bus(plan: NetworkPlan) -> list[Finding]:
     heartbeats, SYNC), each at the line of the bus description that causes it."""
     file = plan.network.file
     findings = [*_bus_node_ids(plan, file)]
+    findings.extend(_bus_finding(file, line, message) for slave in plan.slaves for line, message in slave.problems)
     senders = _bus_senders(plan)
     findings.extend(_bus_collisions(senders, file))
     findings.extend(_bus_consumers(plan, senders, file))

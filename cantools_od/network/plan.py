@@ -15,7 +15,7 @@ import os
 import struct
 from dataclasses import dataclass, field
 
-from ..model import Device, NodeIdExpr, ValueKind
+from ..model import Device, NodeIdExpr, ValueKind, Variable
 from ..model.cia301.cobid import PREDEFINED, VALID
 from ..model.cia301.master import EXPECTED_SOFTWARE, REVISION_NUMBER, SERIAL_NUMBER
 from ..model.cia301.objects import (
@@ -108,6 +108,8 @@ class SlavePlan:
     heartbeat_producer: int = 0
     configuration_file: str = ""
     warnings: list[str] = field(default_factory=list)
+    problems: list[tuple[int, str]] = field(default_factory=list)
+    """(line, message) of each `sdo` entry the master could not write: left out, reported by the checks."""
 
     def active(self, direction: str) -> list[PlannedPdo]:
         return [pdo for pdo in self.pdos if pdo.direction == direction and pdo.active and pdo.signals]
@@ -210,10 +212,23 @@ class _Slave:
             raise self.fail(line, f"object {what} is {found.var.access.value}: the master cannot write it")
         try:
             data = encode(self.device.entry_type(found.var, found.owner), value, what)
+            self._within_limits(found.var, value, what)
         except ValueError as error:
             raise self.fail(line, str(error)) from None
         self.held[(index, sub)] = value
         return Write(index, sub, data, line)
+
+
+    def _within_limits(self, var: Variable, value: object, what: str) -> None:
+        """A value below the sub-object's LowLimit or above its HighLimit is refused by the device."""
+        if not isinstance(value, int | float) or isinstance(value, bool):
+            return
+        low = self.device.resolve(var.low_limit, self.plan.node_id)
+        high = self.device.resolve(var.high_limit, self.plan.node_id)
+        if isinstance(low, int | float) and not isinstance(low, bool) and value < low:
+            raise ValueError(f"{what}: {value} is below its LowLimit {low}")
+        if isinstance(high, int | float) and not isinstance(high, bool) and value > high:
+            raise ValueError(f"{what}: {value} is above its HighLimit {high}")
 
 
 def plan_network(network: Network, devices: dict[str, Device], parameter_values: bool = True) -> NetworkPlan:
@@ -248,7 +263,10 @@ def _plan_slave(
     for (direction, _), config in sorted(configured.items()):
         plan.writes.extend(_pdo(state, direction, config, next_cob))
     for entry in slave.sdo:
-        plan.writes.append(state.write(entry.index, entry.sub_index, entry.value, entry.line))
+        try:
+            plan.writes.append(state.write(entry.index, entry.sub_index, entry.value, entry.line))
+        except NetworkError as error:
+            plan.problems.append((entry.line, error.reason))
     plan.pdos = _final_pdos(state)
     plan.heartbeat_producer = state.holds(PRODUCER_HEARTBEAT, 0) if plan.has(PRODUCER_HEARTBEAT, 0) else 0
     if slave.heartbeat_producer is not None:

@@ -23,6 +23,7 @@ class NetworkError(ValueError):
         super().__init__(f"{file}:{line}: error: {message}" if line else f"{file}: error: {message}")
         self.file = file
         self.line = line
+        self.reason = message
 
 
 class Located(dict[Any, Any]):

@@ -3,7 +3,6 @@ the network checks at file:line, bus load against hand-computed frames."""
 
 from __future__ import annotations
 
-import os
 import shutil
 import subprocess
 from pathlib import Path
@@ -79,8 +78,6 @@ def test_generates_master_and_concise_dcfs(folder: Path) -> None:
     [
         (("  sync_period: 10000", "  sync_periode: 10000"), "bus.yml:5: error: unknown key 'sync_periode' in master; did you mean sync_period"),
         (("cob_id: auto\n      transmission", "cob_id: auto\n      transmision"), "bus.yml:12: error: unknown key 'transmision' in drive.tpdo.1; did you mean transmission"),
-        (("value: 1}", "value: 300}"), "bus.yml:22: error: drive: 6060sub0 is INTEGER8: 300 is out of its range -128..127"),
-        (("index: 0x6060", "index: 0x6F60"), "bus.yml:22: error: drive: object 6F60sub0 does not exist in cia402_drive.eds"),
         (("node_id: 3", "node_id: 200"), "bus.yml:24: error: io: node_id 200 is not 1-127"),
         (("dcf: io_device.eds", "dcf: nowhere.eds"), "bus.yml:25: error: io: dcf 'nowhere.eds' is not in"),
         (("  node_id: 2\n", "  node_id: 2\n  node_id: 4\n"), "bus.yml:8: error: not YAML: key 'node_id' written twice"),
@@ -97,19 +94,39 @@ def test_refusals_are_one_line(folder: Path, edit: tuple[str, str], message: str
     assert not (folder / "out").exists()
 
 
+def test_sdo_entries_checked_at_their_lines(folder: Path) -> None:
+    extra = "    - {index: 0x6F60, value: 3}\n    - {index: 0x6041, value: 3}\n    - {index: 0x6060, value: 300}\n"
+    (folder / "bus.yml").write_text(BUS.replace("value: 1}\n", "value: 1}\n" + extra))
+    for command in (["network", "bus.yml", "-o", "out"], ["lint", "--network", "bus.yml"]):
+        args = [*cli_command(), *command, "--define", "INSTALL=/x"]
+        result = subprocess.run(args, capture_output=True, text=True, cwd=folder, timeout=120)
+        assert result.returncode == 1 and not (folder / "out").exists()
+        found = result.stderr + result.stdout
+        assert "bus.yml:23:1: error: drive: object 6F60sub0 does not exist in cia402_drive.eds [COB011]" in found
+        assert "bus.yml:24:1: error: drive: object 6041sub0 is ro: the master cannot write it [COB011]" in found
+        assert "bus.yml:25:1: error: drive: 6060sub0 is INTEGER8: 300 is out of its range -128..127 [COB011]" in found
+
+
+def test_lint_takes_a_bus_description_with_network_only(folder: Path) -> None:
+    result = subprocess.run([*cli_command(), "lint", "bus.yml"], capture_output=True, text=True, cwd=folder)
+    assert result.returncode == 2 and result.stderr == "bus.yml: error: a bus description is checked as a network: add --network\n"
+    clean = subprocess.run([*cli_command(), "lint", "--network", "bus.yml", "--define", "INSTALL=/x"], capture_output=True, text=True, cwd=folder)
+    assert clean.returncode == 0, clean.stdout + clean.stderr
+
+
 def test_placeholder_needs_a_define(folder: Path) -> None:
     result = run("bus.yml", "-o", "out", cwd=folder)
     assert result.returncode == 2 and result.stderr == "bus.yml:2: error: @INSTALL@ is not defined: give --define INSTALL=VALUE\n"
 
 
-@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
 def test_all_or_nothing(folder: Path) -> None:
     out = folder / "out"
     out.mkdir()
     (out / "master.dcf").write_text("old")
     (out / "drive.bin").mkdir()  # a folder where a file must go: nothing is written
     result = run(folder / "bus.yml", "-o", out, "--define", "INSTALL=/x")
-    assert result.returncode == 2 and (out / "master.dcf").read_text() == "old"
+    assert result.returncode == 2 and result.stderr.count("\n") == 1 and "drive.bin" in result.stderr
+    assert (out / "master.dcf").read_text() == "old" and sorted(p.name for p in out.iterdir()) == ["drive.bin", "master.dcf"]
 
 
 def test_collision_unfed_and_length_mismatch_at_their_lines(folder: Path) -> None:

@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, write_outputs
+from ..model import Severity
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, report, write_outputs
 
 if TYPE_CHECKING:
     from ..model import Device
@@ -28,8 +29,11 @@ def _defines(values: tuple[str, ...]) -> dict[str, str]:
     return defines
 
 
-def load_network(bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...]) -> tuple[Network, dict[str, Device]]:
-    """The network and each slave's device; any failure is one line and exit 2."""
+def load_network(
+    bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...], keep_going: bool = False
+) -> tuple[Network, dict[str, Device]]:
+    """The network and each slave's device; any failure is one line and exit 2. Errors in reading a
+    node's file refuse the network, unless `keep_going` (then they are printed and the rest goes on)."""
     from ..api import load
     from ..network.read import read_network
     from ..network.yamltree import NetworkError
@@ -52,8 +56,12 @@ def load_network(bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...]) 
             click.echo(f"{where}: error: {slave.name}: {slave.dcf_file}: {error}", err=True)
             sys.exit(EXIT_USAGE)
         problem = errors_to_fix(device)
-        if problem:
-            click.echo(f"{where}: error: {slave.name}: {slave.dcf_file}: {problem} (cantools-od lint)", err=True)
+        if problem and keep_going:
+            report(device.diagnostics, minimum=Severity.ERROR)
+        elif problem:
+            click.echo(
+                f"{where}: error: {slave.name}: {slave.dcf_file}: {problem} (cantools-od lint; --keep-going)", err=True
+            )
             sys.exit(EXIT_USAGE)
         devices[slave.name] = device
     return network, devices
@@ -97,6 +105,7 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
     "--threshold", type=click.FloatRange(1, 100), default=70.0, show_default=True, help="Warn above this load (%)."
 )
 @click.option("--dbc", type=click.Path(dir_okay=False), help="Write every PDO of the network as a DBC file.")
+@click.option("--keep-going", is_flag=True, help="Go on despite errors in reading the nodes' files (printed).")
 @click.option("--check/--no-check", default=True, show_default=True, help="Refuse a network the checks find errors in.")
 def command(
     bus: str,
@@ -109,6 +118,7 @@ def command(
     show_load: bool,
     threshold: float,
     dbc: str | None,
+    keep_going: bool,
     check: bool,
 ) -> None:
     """Turn the bus description BUS (lely dcfgen's bus.yml, ros2_canopen's included) into the master's
@@ -120,7 +130,7 @@ def command(
             "cantools-od network: error: nothing to do: give -o OUTDIR, --load or --dbc FILE (see --help)", err=True
         )
         sys.exit(EXIT_USAGE)
-    network, devices = load_network(bus, defines, dcf_dirs)
+    network, devices = load_network(bus, defines, dcf_dirs, keep_going)
     plan = make_plan(network, devices, not no_parameter_values)
     failed = False
     if check:

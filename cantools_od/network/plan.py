@@ -127,7 +127,7 @@ class SlavePlan:
             return self.slave.revision_number
         if sub == IDENTITY_SERIAL and self.slave.serial_number is not None:
             return self.slave.serial_number
-        return from_info if from_info else (value or 0)
+        return from_info if from_info is not None else (value or 0)  # DeviceInfo over 1018h, as dcfgen
 
     def has(self, index: int, sub: int) -> bool:
         return slot(self.device, index, sub) is not None
@@ -217,7 +217,6 @@ class _Slave:
             raise self.fail(line, str(error)) from None
         self.held[(index, sub)] = value
         return Write(index, sub, data, line)
-
 
     def _within_limits(self, var: Variable, value: object, what: str) -> None:
         """A value below the sub-object's LowLimit or above its HighLimit is refused by the device."""

@@ -44,7 +44,9 @@ io:
 
 
 def run(*args: str | Path, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([*cli_command(), "network", *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=120)
+    return subprocess.run(
+        [*cli_command(), "network", *map(str, args)], capture_output=True, text=True, cwd=cwd, timeout=120
+    )
 
 
 @pytest.fixture
@@ -70,14 +72,22 @@ def test_generates_master_and_concise_dcfs(folder: Path) -> None:
     master = (folder / "out" / "master.dcf").read_text()
     assert "UploadFile=/opt/cfg/drive.bin" in master and "DefaultValue=0x00000182" in master
     assert (folder / "out" / "drive.dcf").is_file() and (folder / "out" / "io.dcf").is_file()
-    assert subprocess.run([*cli_command(), "lint", str(folder / "out" / "drive.dcf")], capture_output=True).returncode == 0
+    assert (
+        subprocess.run([*cli_command(), "lint", str(folder / "out" / "drive.dcf")], capture_output=True).returncode == 0
+    )
 
 
 @pytest.mark.parametrize(
     ("edit", "message"),
     [
-        (("  sync_period: 10000", "  sync_periode: 10000"), "bus.yml:5: error: unknown key 'sync_periode' in master; did you mean sync_period"),
-        (("cob_id: auto\n      transmission", "cob_id: auto\n      transmision"), "bus.yml:12: error: unknown key 'transmision' in drive.tpdo.1; did you mean transmission"),
+        (
+            ("  sync_period: 10000", "  sync_periode: 10000"),
+            "bus.yml:5: error: unknown key 'sync_periode' in master; did you mean sync_period",
+        ),
+        (
+            ("cob_id: auto\n      transmission", "cob_id: auto\n      transmision"),
+            "bus.yml:12: error: unknown key 'transmision' in drive.tpdo.1; did you mean transmission",
+        ),
         (("node_id: 3", "node_id: 200"), "bus.yml:24: error: io: node_id 200 is not 1-127"),
         (("dcf: io_device.eds", "dcf: nowhere.eds"), "bus.yml:25: error: io: dcf 'nowhere.eds' is not in"),
         (("  node_id: 2\n", "  node_id: 2\n  node_id: 4\n"), "bus.yml:8: error: not YAML: key 'node_id' written twice"),
@@ -109,14 +119,25 @@ def test_sdo_entries_checked_at_their_lines(folder: Path) -> None:
 
 def test_lint_takes_a_bus_description_with_network_only(folder: Path) -> None:
     result = subprocess.run([*cli_command(), "lint", "bus.yml"], capture_output=True, text=True, cwd=folder)
-    assert result.returncode == 2 and result.stderr == "bus.yml: error: a bus description is checked as a network: add --network\n"
-    clean = subprocess.run([*cli_command(), "lint", "--network", "bus.yml", "--define", "INSTALL=/x"], capture_output=True, text=True, cwd=folder)
+    assert (
+        result.returncode == 2
+        and result.stderr == "bus.yml: error: a bus description is checked as a network: add --network\n"
+    )
+    clean = subprocess.run(
+        [*cli_command(), "lint", "--network", "bus.yml", "--define", "INSTALL=/x"],
+        capture_output=True,
+        text=True,
+        cwd=folder,
+    )
     assert clean.returncode == 0, clean.stdout + clean.stderr
 
 
 def test_placeholder_needs_a_define(folder: Path) -> None:
     result = run("bus.yml", "-o", "out", cwd=folder)
-    assert result.returncode == 2 and result.stderr == "bus.yml:2: error: @INSTALL@ is not defined: give --define INSTALL=VALUE\n"
+    assert (
+        result.returncode == 2
+        and result.stderr == "bus.yml:2: error: @INSTALL@ is not defined: give --define INSTALL=VALUE\n"
+    )
 
 
 def test_all_or_nothing(folder: Path) -> None:
@@ -126,11 +147,16 @@ def test_all_or_nothing(folder: Path) -> None:
     (out / "drive.bin").mkdir()  # a folder where a file must go: nothing is written
     result = run(folder / "bus.yml", "-o", out, "--define", "INSTALL=/x")
     assert result.returncode == 2 and result.stderr.count("\n") == 1 and "drive.bin" in result.stderr
-    assert (out / "master.dcf").read_text() == "old" and sorted(p.name for p in out.iterdir()) == ["drive.bin", "master.dcf"]
+    assert (out / "master.dcf").read_text() == "old" and sorted(p.name for p in out.iterdir()) == [
+        "drive.bin",
+        "master.dcf",
+    ]
 
 
 def test_collision_unfed_and_length_mismatch_at_their_lines(folder: Path) -> None:
-    bus = BUS.replace("  sdo:\n", "    2:\n      cob_id: 0x183\n      mapping:\n        - {index: 0x6040, sub_index: 0}\n  sdo:\n")
+    bus = BUS.replace(
+        "  sdo:\n", "    2:\n      cob_id: 0x183\n      mapping:\n        - {index: 0x6040, sub_index: 0}\n  sdo:\n"
+    )
     bus += "  rpdo:\n    1:\n      cob_id: 0x182\n"
     (folder / "bus.yml").write_text(bus)
     result = run(folder / "bus.yml", "-o", folder / "out", "--define", "INSTALL=/x")
@@ -138,11 +164,15 @@ def test_collision_unfed_and_length_mismatch_at_their_lines(folder: Path) -> Non
     lines = result.stderr.splitlines()
     collision = ":32:1: error: the master: its mirror of io's RPDO1 sends CAN-ID 182h, which drive (TPDO1) sends too"
     assert any(collision in line for line in lines), lines
-    assert any(":22:1: error: drive: RPDO2 maps 16 bits, but io's TPDO1 sends 40 bits [COB011]" in line for line in lines)
+    assert any(
+        ":22:1: error: drive: RPDO2 maps 16 bits, but io's TPDO1 sends 40 bits [COB011]" in line for line in lines
+    )
 
 
 def test_unfed_rpdo_warned(folder: Path) -> None:
-    bus = BUS.replace("  sdo:\n", "    2:\n      cob_id: 0x383\n      mapping:\n        - {index: 0x6040, sub_index: 0}\n  sdo:\n")
+    bus = BUS.replace(
+        "  sdo:\n", "    2:\n      cob_id: 0x383\n      mapping:\n        - {index: 0x6040, sub_index: 0}\n  sdo:\n"
+    )
     (folder / "bus.yml").write_text(bus)
     result = run(folder / "bus.yml", "-o", folder / "out", "--define", "INSTALL=/x")
     assert result.returncode == 0, result.stderr

@@ -47,7 +47,17 @@ CAN-ID has one producer; an RPDO reads what the TPDO with its CAN-ID sends, so b
 on the total length and on where each mapped object starts and ends; one node at most produces
 SYNC (1005h bit 30). Errors: shared node-IDs, shared producers, layouts that differ, several SYNC
 producers. Warnings: an RPDO no node sends, objects of one length but different data types, a
-node without a node-ID (its `$NODEID` COB-IDs are then skipped).""",
+node without a node-ID (its `$NODEID` COB-IDs are then skipped).
+
+Given a bus description (`lint --network bus.yml`, and `network` before it writes anything), the
+network is the one the master configures (CiA 302-2): the slaves' PDOs as the YAML remaps them and
+the master's mirrors of their RPDOs. Errors, at the YAML's line: shared node-IDs, a CAN-ID sent by
+two nodes (or in a range CiA 301 reserves), an RPDO that reads another slave's TPDO with another
+length or layout, a `sdo` entry the master cannot write (no such object, not writable, outside its
+data type or its LowLimit/HighLimit), a slave producing SYNC besides the master, a heartbeat
+multiplier below 1. Warnings: an RPDO listening to a node's pre-defined TPDO CAN-ID that the node
+does not send, a slave consuming a heartbeat the master does not produce, synchronous PDOs without
+a SYNC producer.""",
     "; file: a.dcf\n" + ex.NODE_5 + "; file: b.dcf\n" + ex.NODE_5 + "; $ cantools-od lint --network a.dcf b.dcf",
     fixed="; file: a.dcf\n"
     + ex.NODE_5

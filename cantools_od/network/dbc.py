@@ -9,11 +9,16 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from ..model import ValueKind
 from ..model.cia301.cobid import BASE_11BIT, BASE_29BIT, EXTENDED, VALID
 from ..model.cia301.objects import TX
 from .plan import NetworkPlan, PlannedPdo, Signal
+
+if TYPE_CHECKING:
+    from cantools.database.can import Message as DbcMessage
+    from cantools.database.can import Signal as DbcSignal
 
 CLASSIC_BYTES = 8
 
@@ -26,7 +31,7 @@ def _identifier(text: str, fallback: str) -> str:
     return f"_{name}" if name[0].isdigit() else name
 
 
-def _signal(signal: Signal, taken: set[str]) -> object:
+def _signal(signal: Signal, taken: set[str]) -> DbcSignal:
     from cantools.database.can import Signal as DbcSignal
     from cantools.database.conversion import BaseConversion
 
@@ -52,7 +57,7 @@ def _signal(signal: Signal, taken: set[str]) -> object:
     )
 
 
-def _message(pdo: PlannedPdo, sender: str, name: str) -> object:
+def _message(pdo: PlannedPdo, sender: str, name: str) -> DbcMessage:
     from cantools.database.can import Message
 
     taken: set[str] = set()
@@ -89,7 +94,7 @@ def dbc_text(messages: Iterable[tuple[PlannedPdo, str, str]]) -> bytes:
         built.append(_message(pdo, sender, name))
         if sender not in senders:
             senders.append(sender)
-    database = Database(messages=built, nodes=[Node(name) for name in senders])  # type: ignore[arg-type]
+    database = Database(messages=built, nodes=[Node(name) for name in senders])
     text: str = database.as_dbc_string()
     return text.encode("utf-8")
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..model.cia301.cobid import EXTENDED, HEARTBEAT_BASE, SYNC_ID
+from ..model.cia301.cobid import BASE_29BIT, EXTENDED, HEARTBEAT_BASE, SYNC_ID
 from ..model.cia301.objects import RX, TX
 from .plan import NetworkPlan, PlannedPdo
 
@@ -69,7 +69,7 @@ class Load:
 
 def _pdo_frame(pdo: PlannedPdo, who: str, sync_hz: float) -> Frame | str:
     """The PDO's frame and rate, or why it is not counted."""
-    name = f"{who} {pdo.name} ({pdo.cob_id & 0x1FFFFFFF:03X}h)"
+    name = f"{who} {pdo.name} ({pdo.cob_id & BASE_29BIT:03X}h)"
     bits = frame_bits((pdo.bits + 7) // 8, bool(pdo.cob_id & EXTENDED))
     kind = pdo.transmission
     if kind <= SYNC_LAST:

@@ -10,6 +10,8 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from ..model.cia301.cobid import TIME_ID
+
 
 class _Part(BaseModel):
     model_config = ConfigDict(frozen=False, defer_build=True)
@@ -67,7 +69,7 @@ class Master(_Part):
     sync_period: int = 0
     sync_window: int = 0
     sync_overflow: int = 0
-    time_cob_id: int = 0x100
+    time_cob_id: int = TIME_ID
     emcy_inhibit_time: int = 0
     heartbeat_multiplier: float | None = None
     heartbeat_consumer: bool = True

@@ -198,3 +198,50 @@ def test_load_report(folder: Path) -> None:
     assert "not counted: master → io RPDO1 (203h): event-driven" in result.stdout
     high = run(folder / "bus.yml", "--load", "--define", "INSTALL=/x", "--threshold", "5")
     assert high.returncode == 1 and "warning: bus load 8.0 % is above 5 %" in high.stdout
+
+
+def as_dcf(eds: str, node_id: int, values: dict[str, str]) -> str:
+    """The EDS text as a DCF for `node_id`, with ParameterValue=... after the DefaultValue of each named section."""
+    text = eds.replace("[DeviceInfo]", f"[DeviceComissioning]\nNodeID={node_id}\nBaudrate=500\n\n[DeviceInfo]", 1)
+    for section, value in values.items():
+        head = text.index(f"[{section}]\n")
+        default = text.index("DefaultValue=", head)
+        end = text.index("\n", default)
+        text = text[: end + 1] + f"ParameterValue={value}\n" + text[end + 1 :]
+    return text
+
+
+def test_dcf_parameter_values_become_boot_writes(folder: Path) -> None:
+    """A DCF's configured values reach the device only when the master writes them (ros2_canopen #351)."""
+    eds = (folder / "io_device.eds").read_text()
+    (folder / "io.dcf").write_text(as_dcf(eds, 3, {"1017": "250", "6200sub1": "0x0F", "1800sub2": "1"}))
+    (folder / "bus.yml").write_text("master:\n  node_id: 1\n  sync_period: 1000\nio:\n  dcf: io.dcf\n")
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    assert result.returncode == 0, result.stderr
+    writes = read_concise_dcf((folder / "out" / "io.bin").read_bytes())
+    assert (0x1017, 0, (250).to_bytes(2, "little")) in writes
+    assert (0x6200, 1, b"\x0f") in writes
+    # TPDO1's transmission type goes through the PDO sequence: disabled, set, enabled again
+    tpdo = [w for w in writes if w[0] == 0x1800]
+    assert tpdo == [
+        (0x1800, 1, (0x80000183).to_bytes(4, "little")),
+        (0x1800, 2, b"\x01"),
+        (0x1800, 1, (0x183).to_bytes(4, "little")),
+    ]
+    assert "NodeID=3" in (folder / "out" / "io.dcf").read_text()
+    plain = run("bus.yml", "-o", "plain", "--no-parameter-values", cwd=folder)
+    assert plain.returncode == 0 and not (folder / "plain" / "io.bin").exists()  # nothing left to write: no .bin
+    assert "UploadFile" not in (folder / "plain" / "master.dcf").read_text()
+
+
+def test_dbc_of_the_network(folder: Path) -> None:
+    import cantools
+
+    result = run(folder / "bus.yml", "--dbc", folder / "bus.dbc", "--define", "INSTALL=/x")
+    assert result.returncode == 0, result.stderr
+    database = cantools.database.load_file(str(folder / "bus.dbc"))
+    tpdo1 = database.get_message_by_frame_id(0x182)
+    assert tpdo1.name == "drive_TPDO1" and tpdo1.senders == ["drive"] and tpdo1.length == 6
+    assert [(s.start, s.length, s.is_signed) for s in tpdo1.signals] == [(0, 16, False), (16, 32, True)]
+    rpdo1 = database.get_message_by_frame_id(0x202)
+    assert rpdo1.senders == ["master"]

@@ -245,3 +245,42 @@ def test_dbc_of_the_network(folder: Path) -> None:
     assert [(s.start, s.length, s.is_signed) for s in tpdo1.signals] == [(0, 16, False), (16, 32, True)]
     rpdo1 = database.get_message_by_frame_id(0x202)
     assert rpdo1.senders == ["master"]
+
+
+HOSTILE = {
+    "a list": "- master\n- slave\n",
+    "a scalar": "just text\n",
+    "empty": "",
+    "binary": "\x00\x01\x02master:\n",
+    "tabs": "master:\n\tnode_id: 1\n",
+    "master a list": "master: [1, 2]\n",
+    "node a number": "master:\n  node_id: 1\nio: 5\n",
+    "tpdo a number": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: 5}\n",
+    "tpdo key text": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {first: {enabled: true}}}\n",
+    "pdo 513": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {513: {enabled: true}}}\n",
+    "pdo absent": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {40: {cob_id: auto}}}\n",
+    "mapping a map": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {1: {mapping: {index: 1}}}}\n",
+    "mapping without index": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {1: {mapping: [{sub_index: 1}]}}}\n",
+    "mapping a domain": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {1: {mapping: [{index: 0x1008}]}}}\n",
+    "sdo a map": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, sdo: {index: 1}}\n",
+    "sdo value a list": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, sdo: [{index: 0x1017, value: [1]}]}\n",
+    "bool as number": "master: {node_id: true}\n",
+    "text as bool": "master: {node_id: 1, start: 'no'}\nio: {dcf: io_device.eds, node_id: 3}\n",
+    "no dcf": "master: {node_id: 1}\nio: {node_id: 3}\n",
+    "dcf a folder": "master: {node_id: 1}\nio: {dcf: ., node_id: 3}\n",
+    "dcf not a device": "master: {node_id: 1}\nio: {dcf: bus.yml, node_id: 3}\n",
+    "no node-ID": "master: {node_id: 1}\nio: {dcf: io_device.eds}\n",
+    "master 0": "master: {node_id: 0}\n",
+    "auto exhausted": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {5: {cob_id: auto}}}\n",
+    "anchors": "a: &x [*x]\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(HOSTILE))
+def test_hostile_bus_descriptions(folder: Path, name: str) -> None:
+    (folder / "bus.yml").write_text(HOSTILE[name], encoding="utf-8")
+    result = run("bus.yml", "-o", "out", "--load", "--dbc", "out.dbc", cwd=folder)
+    assert "Traceback" not in result.stderr
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert result.stderr.count("\n") == 1 and result.stderr.startswith("bus.yml"), result.stderr
+    assert not (folder / "out").exists() and not (folder / "out.dbc").exists()

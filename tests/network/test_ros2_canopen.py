@@ -113,6 +113,9 @@ def test_every_example_generates_and_matches_dcfgen(checkout: Path, tmp_path: Pa
             assert len(result.stderr.splitlines()) == 1 and not (tmp_path / "ours" / name).exists()
             continue
         assert result.returncode == 0, f"{name}: {result.stderr}"
+        for written in sorted((tmp_path / "ours" / name).glob("*.dcf")):  # lely's own parser accepts each DCF
+            check = subprocess.run([str(Path(sys.executable).parent / "dcfchk"), str(written)], capture_output=True)
+            assert check.returncode == 0, f"{written.name}: {check.stderr.decode()}"
         theirs = dcfgen(bus, tmp_path / "dcfgen" / name)
         if theirs.returncode != 0:
             dcfgen_failed.append((name, theirs.stderr.strip().splitlines()[-1]))

@@ -102,6 +102,9 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
 @click.option("--no-node-dcf", is_flag=True, help="Do not write a DCF per node.")
 @click.option("--load", "show_load", is_flag=True, help="Print the bus load per bit rate.")
 @click.option(
+    "--data-bitrate", type=click.IntRange(1, 20_000), help="CAN FD data phase in kbit/s (--load, PDOs above 8 bytes)."
+)
+@click.option(
     "--threshold", type=click.FloatRange(1, 100), default=70.0, show_default=True, help="Warn above this load (%)."
 )
 @click.option("--dbc", type=click.Path(dir_okay=False), help="Write every PDO of the network as a DBC file.")
@@ -116,6 +119,7 @@ def command(
     remote_pdo: bool,
     no_node_dcf: bool,
     show_load: bool,
+    data_bitrate: int | None,
     threshold: float,
     dbc: str | None,
     keep_going: bool,
@@ -157,7 +161,7 @@ def command(
     if show_load:
         from ..network.load import bus_load, format_load
 
-        report = bus_load(plan)
+        report = bus_load(plan, data_bitrate)
         click.echo(format_load(report, threshold), nl=False)
         failed = failed or report.peak_percent > threshold
     sys.exit(EXIT_FINDINGS if failed else EXIT_OK)

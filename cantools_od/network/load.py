@@ -10,10 +10,15 @@ How often each frame is sent follows its transmission type: 1-240 every n-th SYN
 per SYNC, 254/255 on events, as often as the inhibit time allows (else every event timer period;
 with neither the rate is unknown and the PDO is listed as not counted), 252/253 only on request
 (not counted). SYNC is sent every `sync_period` µs, heartbeats every producer time.
+
+A PDO longer than 8 bytes can only travel in a CAN FD frame: its worst case follows ISO 11898-1:2015
+(arbitration and the frame's end at the nominal rate, control, data, stuff count and CRC at the data
+rate), counted in nominal bit times; the load at other bit rates keeps the ratio of the two rates.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from ..model.cia301.cobid import BASE_29BIT, EXTENDED, HEARTBEAT_BASE, SYNC_ID
@@ -32,6 +37,29 @@ def frame_bits(data_bytes: int, extended: bool = False) -> int:
     """Worst-case bit times of a classical CAN data frame, stuff bits included."""
     stuffed = STUFFED_BITS[extended] + 8 * data_bytes
     return stuffed + (stuffed - 1) // 4 + UNSTUFFED_BITS
+
+
+FD_LENGTHS = (0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64)  # the data lengths a CAN FD DLC can state
+FD_ARBITRATION = {False: 17, True: 36}  # SOF, identifier, RRS, IDE, (SRR), FDF, res, BRS: at the nominal rate
+FD_CONTROL = 5  # ESI, DLC: at the data rate
+FD_TAIL = 12  # ACK slot, ACK delimiter, EOF (7), intermission (3): at the nominal rate
+FD_CRC_SPLIT = 16  # data bytes up to which the CRC has 17 bits, 21 above
+
+
+def fd_frame_time(data_bytes: int, nominal: int, data_rate: int, extended: bool = False) -> float:
+    """Worst-case duration in µs of a CAN FD data frame (ISO 11898-1:2015) with bit rate switching from
+    `nominal` to `data_rate` kbit/s: dynamic stuff bits up to the end of the data, then the stuff count
+    (4 bits) and the CRC (17 or 21 bits) with their fixed stuff bits (one before, one after every 4)."""
+    length = next(size for size in FD_LENGTHS if size >= data_bytes)
+    arbitration = FD_ARBITRATION[extended]
+    stuffed = arbitration + FD_CONTROL + 8 * length
+    stuff_bits = (stuffed - 1) // 4
+    nominal_stuff = (arbitration - 1) // 4
+    crc = 17 if length <= FD_CRC_SPLIT else 21
+    fixed = 1 + (4 + crc) // 4
+    nominal_bits = arbitration + nominal_stuff + 1 + FD_TAIL  # the CRC delimiter counted at the nominal rate
+    data_bits = FD_CONTROL + 8 * length + (stuff_bits - nominal_stuff) + 4 + crc + fixed
+    return 1000 * nominal_bits / nominal + 1000 * data_bits / data_rate
 
 
 @dataclass(frozen=True)
@@ -67,10 +95,22 @@ class Load:
         return max(self.percent_per_second(), self.percent_per_sync())
 
 
-def _pdo_frame(pdo: PlannedPdo, who: str, sync_hz: float) -> Frame | str:
+CLASSIC_BYTES = 8
+
+
+def pdo_bits(pdo: PlannedPdo, nominal: int, data_rate: int) -> int:
+    """Worst-case bit times of the PDO's frame at the nominal rate: a classical frame up to 8 bytes,
+    a CAN FD frame (its data phase at `data_rate`) above."""
+    size, extended = (pdo.bits + 7) // 8, bool(pdo.cob_id & EXTENDED)
+    if size <= CLASSIC_BYTES:
+        return frame_bits(size, extended)
+    return math.ceil(fd_frame_time(size, nominal, data_rate, extended) * nominal / 1000)
+
+
+def _pdo_frame(pdo: PlannedPdo, who: str, sync_hz: float, rates: tuple[int, int]) -> Frame | str:
     """The PDO's frame and rate, or why it is not counted."""
     name = f"{who} {pdo.name} ({pdo.cob_id & BASE_29BIT:03X}h)"
-    bits = frame_bits((pdo.bits + 7) // 8, bool(pdo.cob_id & EXTENDED))
+    bits = pdo_bits(pdo, *rates)
     kind = pdo.transmission
     if kind <= SYNC_LAST:
         if not sync_hz:
@@ -88,8 +128,11 @@ def _pdo_frame(pdo: PlannedPdo, who: str, sync_hz: float) -> Frame | str:
     return f"{name}: event-driven without event timer or inhibit time: its rate is the application's"
 
 
-def bus_load(plan: NetworkPlan) -> Load:
+def bus_load(plan: NetworkPlan, data_rate: int | None = None) -> Load:
+    """The network's frames and rates; PDOs above 8 bytes are CAN FD frames whose data phase runs at
+    `data_rate` kbit/s (the nominal rate when not given)."""
     master = plan.master
+    rates = (master.baudrate, data_rate or master.baudrate)
     load = Load(plan.network.file, master.baudrate, master.sync_period)
     sync_hz = 1e6 / master.sync_period if master.sync_period else 0.0
     if sync_hz:
@@ -103,7 +146,7 @@ def bus_load(plan: NetworkPlan) -> Load:
         name = slave.slave.name
         for direction, who in ((TX, name), (RX, f"master → {name}")):
             for pdo in slave.active(direction):
-                result = _pdo_frame(pdo, who, sync_hz)
+                result = _pdo_frame(pdo, who, sync_hz, rates)
                 if isinstance(result, str):
                     load.not_counted.append(result)
                 else:

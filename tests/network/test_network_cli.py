@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from cantools_od.model.cia301.master import read_concise_dcf
-from cantools_od.network.load import frame_bits
+from cantools_od.network.load import fd_frame_time, frame_bits
 
 from support import EXAMPLES, cli_command
 
@@ -183,6 +183,26 @@ def test_frame_bits_by_hand() -> None:
     # 11-bit identifier: 34 stuffed bits + 8 per byte, a stuff bit per 4 after the first, 13 unstuffed
     assert [frame_bits(n) for n in (0, 1, 3, 8)] == [55, 65, 85, 135]
     assert frame_bits(8, extended=True) == 160
+
+
+def test_fd_frame_time_by_hand() -> None:
+    # 16 bytes, 1000/4000 kbit/s: 17 arbitration bits + 4 stuff bits + CRC delimiter + 12 tail bits at
+    # 1 µs (34 µs); 5 control + 128 data + 33 more stuff bits + 4 stuff count + 17 CRC + 6 fixed stuff
+    # bits at 0.25 µs (48.25 µs)
+    assert fd_frame_time(16, 1000, 4000) == 34 + 48.25
+    # 10 bytes travel in a 12-byte frame; 64 bytes have a 21-bit CRC and 7 fixed stuff bits
+    assert fd_frame_time(10, 500, 500) == fd_frame_time(12, 500, 500)
+    assert fd_frame_time(64, 1000, 1000) == 34 + 5 + 512 + (17 + 5 + 512 - 1) // 4 - 4 + 4 + 21 + 7
+
+
+def test_load_counts_a_long_pdo_as_can_fd(folder: Path) -> None:
+    long_pdo = "    2:\n      transmission: 1\n      mapping:\n" + "        - {index: 0x6064, sub_index: 0}\n" * 3
+    (folder / "bus.yml").write_text(BUS.replace("  rpdo:\n", long_pdo + "  rpdo:\n"))
+    result = run(folder / "bus.yml", "--load", "--data-bitrate", "4000", "--define", "INSTALL=/x", "--no-check")
+    assert result.returncode == 0, result.stderr
+    # 3 x 32 bits: a 12-byte CAN FD frame; 34 bits at 1 µs, 5 + 96 + 25 stuff + 4 + 17 + 6 bits at 0.25 µs:
+    # 72.25 µs, 73 bit times at 1000 kbit/s
+    assert "drive TPDO2 (282h)             73     100.0" in result.stdout
 
 
 def test_load_report(folder: Path) -> None:

@@ -267,6 +267,7 @@ def test_dbc_of_the_network(folder: Path) -> None:
     assert rpdo1.senders == ["master"]
 
 
+IO = "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, "
 HOSTILE = {
     "a list": "- master\n- slave\n",
     "a scalar": "just text\n",
@@ -275,15 +276,15 @@ HOSTILE = {
     "tabs": "master:\n\tnode_id: 1\n",
     "master a list": "master: [1, 2]\n",
     "node a number": "master:\n  node_id: 1\nio: 5\n",
-    "tpdo a number": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: 5}\n",
-    "tpdo key text": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {first: {enabled: true}}}\n",
-    "pdo 513": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {513: {enabled: true}}}\n",
-    "pdo absent": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {40: {cob_id: auto}}}\n",
-    "mapping a map": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {1: {mapping: {index: 1}}}}\n",
-    "mapping without index": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {1: {mapping: [{sub_index: 1}]}}}\n",
-    "mapping a domain": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {1: {mapping: [{index: 0x1008}]}}}\n",
-    "sdo a map": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, sdo: {index: 1}}\n",
-    "sdo value a list": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, sdo: [{index: 0x1017, value: [1]}]}\n",
+    "tpdo a number": IO + "tpdo: 5}\n",
+    "tpdo key text": IO + "tpdo: {first: {enabled: true}}}\n",
+    "pdo 513": IO + "tpdo: {513: {enabled: true}}}\n",
+    "pdo absent": IO + "tpdo: {40: {cob_id: auto}}}\n",
+    "mapping a map": IO + "tpdo: {1: {mapping: {index: 1}}}}\n",
+    "mapping without index": IO + "tpdo: {1: {mapping: [{sub_index: 1}]}}}\n",
+    "mapping a domain": IO + "tpdo: {1: {mapping: [{index: 0x1008}]}}}\n",
+    "sdo a map": IO + "sdo: {index: 1}}\n",
+    "sdo value a list": IO + "sdo: [{index: 0x1017, value: [1]}]}\n",
     "bool as number": "master: {node_id: true}\n",
     "text as bool": "master: {node_id: 1, start: 'no'}\nio: {dcf: io_device.eds, node_id: 3}\n",
     "no dcf": "master: {node_id: 1}\nio: {node_id: 3}\n",
@@ -291,7 +292,7 @@ HOSTILE = {
     "dcf not a device": "master: {node_id: 1}\nio: {dcf: bus.yml, node_id: 3}\n",
     "no node-ID": "master: {node_id: 1}\nio: {dcf: io_device.eds}\n",
     "master 0": "master: {node_id: 0}\n",
-    "auto exhausted": "master: {node_id: 1}\nio: {dcf: io_device.eds, node_id: 3, tpdo: {5: {cob_id: auto}}}\n",
+    "auto exhausted": IO + "tpdo: {5: {cob_id: auto}}}\n",
     "anchors": "a: &x [*x]\n",
 }
 

@@ -547,8 +547,9 @@ def _heartbeat_consumers(network: Network, slaves: list[SlavePlan]) -> None:
                 value = ((master.node_id & 0xFF) << 16) | (heartbeat & 0xFFFF)
                 plan.writes.insert(0, _raw_write(plan, CONSUMER_HEARTBEAT, sub, value, line))
             else:
+                missing = "no free entry in" if CONSUMER_HEARTBEAT in plan.device.objects else "no object"
                 plan.warnings.append(
-                    f"{network.file}:{line}: warning: {plan.slave.name}: no free entry in {CONSUMER_HEARTBEAT:04X}h"
+                    f"{network.file}:{line}: warning: {plan.slave.name}: {missing} {CONSUMER_HEARTBEAT:04X}h"
                 )
         else:
             for sub, value in subs:

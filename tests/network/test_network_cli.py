@@ -4,6 +4,7 @@ the network checks at file:line, bus load against hand-computed frames."""
 from __future__ import annotations
 
 import shutil
+import sys
 import subprocess
 from pathlib import Path
 
@@ -305,3 +306,56 @@ def test_hostile_bus_descriptions(folder: Path, name: str) -> None:
     assert result.returncode == 2, result.stdout + result.stderr
     assert result.stderr.count("\n") == 1 and result.stderr.startswith("bus.yml"), result.stderr
     assert not (folder / "out").exists() and not (folder / "out.dbc").exists()
+
+
+OPTIONS_BUS = """\
+options:
+  heartbeat_multiplier: 2.5
+  retry_factor: 5
+master:
+  node_id: 1
+  heartbeat_producer: 100
+  sync_period: 5000
+  start_all_nodes: true
+  boot_time: 3000
+  error_behavior: {1: 1}
+drive:
+  dcf: cia402_drive.eds
+  node_id: 2
+  heartbeat_consumer: true
+  heartbeat_producer: 200
+  mandatory: true
+  reset_communication: false
+  revision_number: 7
+  serial_number: 1234
+  software_version: 9
+  tpdo:
+    2:
+      transmission: 254
+      inhibit_time: 100
+      event_timer: 50
+second:
+  dcf: cia402_drive.eds
+  node_id: 3
+  heartbeat_producer: 1000
+  guard_time: 100
+  boot: false
+"""
+
+
+def test_options_agree_with_dcfgen(folder: Path) -> None:
+    """Heartbeats, NMT flags, identity checks, software version, PDO timing: the same files as dcfgen's."""
+    tool = Path(sys.executable).parent / "dcfgen"
+    if not tool.exists():
+        pytest.skip("dcfgen (dcf-tools) is not installed")
+    (folder / "bus.yml").write_text(OPTIONS_BUS)
+    (folder / "theirs").mkdir()
+    theirs = subprocess.run([str(tool), "-d", "theirs", "-S", "bus.yml"], capture_output=True, text=True, cwd=folder)
+    assert theirs.returncode == 0, theirs.stderr
+    ours = run("bus.yml", "-o", "ours", "--no-check", cwd=folder)
+    assert ours.returncode == 0, ours.stderr
+    assert "bus.yml:14: warning: drive: no object 1016h" in ours.stderr  # dcfgen: "object 0x1016 does not exist"
+    names = sorted(p.name for p in (folder / "theirs").iterdir() if p.suffix == ".bin")
+    assert names == ["drive.bin", "master.bin", "second.bin"]
+    for name in [*names, "master.dcf"]:
+        assert (folder / "ours" / name).read_bytes() == (folder / "theirs" / name).read_bytes(), name

@@ -4,8 +4,8 @@ the network checks at file:line, bus load against hand-computed frames."""
 from __future__ import annotations
 
 import shutil
-import sys
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest

@@ -25,6 +25,7 @@ COMMANDS = {
     "rules": ("rules", "List the lint rules, or explain one."),
     "cmake-dir": ("cmake_dir", "Print the folder of the CMake package."),
     "diff": ("diff", "Show what changed between two device descriptions, and what it breaks."),
+    "network": ("network", "Turn a bus description (bus.yml) into the master's configuration, bus load and DBC."),
     "import-table": ("import_table", "Import vendor OD tables (manual text, CSV/TSV, XLSX, Markdown) into an EDS."),
 }
 

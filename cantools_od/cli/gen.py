@@ -16,6 +16,7 @@ from ..model import Device, Severity
 from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
+    EXIT_USAGE,
     check_extension,
     identifiers_for,
     node_id_option,
@@ -40,7 +41,8 @@ def default_name(file: str) -> str:
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option(
     "-t", "--target", "targets", multiple=True, required=True,
-    type=click.Choice(["c", "rust", "python", "markdown", "canopennode"]), help="What to generate; repeat for several.",
+    type=click.Choice(["c", "rust", "python", "markdown", "canopennode", "dbc"]),
+    help="What to generate; repeat for several (dbc: the PDOs at the node-ID, for trace tools).",
 )  # fmt: skip
 @click.option("-o", "--output", "outdir", required=True, type=click.Path(file_okay=False), help="Output folder.")
 @click.option("--name", help="Base name of the generated files and symbols (default: FILE's stem).")
@@ -105,13 +107,29 @@ def command(
             click.echo(f"{why} (--keep-going generates the rest)", err=True)
             sys.exit(EXIT_FINDINGS)
         click.echo(f"{file}: warning: left out of the generated files: {shown}", err=True)
-    files: Iterator[tuple[Path, Iterable[bytes]]] = _files(view, targets, name, Path(outdir), left_out)
+    code_targets = tuple(target for target in targets if target != "dbc")
+    files: Iterator[tuple[Path, Iterable[bytes]]] = _files(view, code_targets, name, Path(outdir), left_out)
+    if "dbc" in targets:
+        files = itertools.chain(files, [(Path(outdir) / f"{base}.dbc", [_dbc(device, file, node_id, base)])])
     if depfile:
         pins = pin_file_for(file, pin_file)
         files = _with_depfile(files, Path(depfile), [file, *([str(pins)] if pins else []), *extra_inputs])
     # Each file is rendered as it is written; a failure anywhere leaves every output as it was.
     write_outputs(files)
     sys.exit(EXIT_OK)
+
+
+def _dbc(device: Device, file: str, node_id: int | None, base: str) -> bytes:
+    """The device's PDOs as a DBC; a device without a node-ID has no CAN-IDs to give them (exit 2)."""
+    from ..model.cia301.cobid import known_node_id
+    from ..network.dbc import device_dbc
+    from ..network.plan import device_pdos
+
+    known = known_node_id(device, node_id)
+    if known is None:
+        click.echo(f"{file}: error: -t dbc needs the node-ID its COB-IDs stand for: give --node-id", err=True)
+        sys.exit(EXIT_USAGE)
+    return device_dbc(device_pdos(device, known, base), base)
 
 
 def _view(

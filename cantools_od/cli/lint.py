@@ -12,6 +12,7 @@ from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device, write_outpu
 
 if TYPE_CHECKING:
     from ..lint import Finding
+    from ..lint.config import Selection
 
 
 def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
@@ -28,7 +29,11 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 @click.option("--fix", is_flag=True, help="Apply safe fixes in place; only the touched lines change.")
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")
-@click.option("--network", is_flag=True, help="Also check the files together as one network (DCFs).")
+@click.option(
+    "--network", is_flag=True,
+    help="Also check the files together as one network (DCFs), or the network a bus.yml describes.",
+)  # fmt: skip
+@click.option("--define", "defines", multiple=True, metavar="NAME=VALUE", help="@NAME@ of a bus.yml (--network).")
 @click.option(
     "--profile", type=click.Choice(["canopennode"]), help="Also apply a target's rules (canopennode: the CNO codes)."
 )
@@ -41,6 +46,7 @@ def command(
     can_fd: bool,
     node_id: int | None,
     network: bool,
+    defines: tuple[str, ...],
     profile: str | None,
 ) -> None:
     """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
@@ -63,7 +69,13 @@ def command(
     options = LintOptions(can_fd=can_fd, node_id=node_id, profile=profile)
     findings: list[Finding] = []
     devices = []
-    for name in files:
+    buses = [name for name in files if Path(name).suffix.lower() in BUS_SUFFIXES]
+    if buses and not network:
+        click.echo(f"{buses[0]}: error: a bus description is checked as a network: add --network", err=True)
+        sys.exit(EXIT_USAGE)
+    for bus in buses:
+        findings.extend(_bus_findings(bus, defines, selection))
+    for name in (name for name in files if name not in buses):
         device = read_device(name, node_id)
         result = lint(device, options, selection)
         if fix and any(f.fix is not None and f.fix.safe for f in result):
@@ -75,12 +87,25 @@ def command(
             result = lint(device, options, selection)
         devices.append(device)
         findings.extend(result)
-    if network:
+    if network and devices:
         from ..lint.runner import lint_network
 
         findings.extend(lint_network(devices, options, selection))
     click.echo(_render(fmt, findings, len(files)), nl=False)
     sys.exit(EXIT_FINDINGS if has_errors(findings) else EXIT_OK)
+
+
+BUS_SUFFIXES = (".yml", ".yaml")
+
+
+def _bus_findings(bus: str, defines: tuple[str, ...], selection: Selection) -> list[Finding]:
+    """COB011 findings of the network a bus description states; one that cannot be read exits 2."""
+    from ..lint.network import lint_bus
+    from .network import load_network, make_plan
+
+    network, devices = load_network(bus, defines, ())
+    findings = lint_bus(make_plan(network, devices, parameter_values=True))
+    return [finding for finding in findings if selection.enabled(finding.code, bus)]
 
 
 def _render(fmt: str, findings: list[Finding], files: int) -> str:

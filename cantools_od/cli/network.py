@@ -1,0 +1,167 @@
+"""`cantools-od network`: a bus description (bus.yml) into the master's configuration, a bus load
+report and a DBC."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import click
+
+from ..model import Severity
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, report, write_outputs
+
+if TYPE_CHECKING:
+    from ..model import Device
+    from ..network.model import Network
+    from ..network.plan import NetworkPlan
+
+
+def _defines(values: tuple[str, ...]) -> dict[str, str]:
+    defines = {}
+    for value in values:
+        name, sep, text = value.partition("=")
+        if not sep or not name:
+            click.echo(f"cantools-od network: error: --define takes NAME=VALUE, not {value!r}", err=True)
+            sys.exit(EXIT_USAGE)
+        defines[name] = text
+    return defines
+
+
+def load_network(
+    bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...], keep_going: bool = False
+) -> tuple[Network, dict[str, Device]]:
+    """The network and each slave's device; any failure is one line and exit 2. Errors in reading a
+    node's file refuse the network, unless `keep_going` (then they are printed and the rest goes on)."""
+    from ..api import load
+    from ..network.read import read_network
+    from ..network.yamltree import NetworkError
+    from ..sniff import NotADeviceDescription
+
+    try:
+        network = read_network(bus, _defines(defines), [Path(d) for d in dcf_dirs])
+    except NetworkError as error:
+        click.echo(str(error), err=True)
+        sys.exit(EXIT_USAGE)
+    devices: dict[str, Device] = {}
+    for slave in network.slaves:
+        where = f"{bus}:{slave.line_of('dcf')}"
+        try:
+            device = load(slave.dcf_file, node_id=slave.node_id)
+        except OSError as error:
+            click.echo(f"{where}: error: {slave.name}: cannot read {slave.dcf_file}: {error.strerror}", err=True)
+            sys.exit(EXIT_USAGE)
+        except NotADeviceDescription as error:
+            click.echo(f"{where}: error: {slave.name}: {slave.dcf_file}: {error}", err=True)
+            sys.exit(EXIT_USAGE)
+        problem = errors_to_fix(device)
+        if problem and keep_going:
+            report(device.diagnostics, minimum=Severity.ERROR)
+        elif problem:
+            click.echo(
+                f"{where}: error: {slave.name}: {slave.dcf_file}: {problem} (cantools-od lint; --keep-going)", err=True
+            )
+            sys.exit(EXIT_USAGE)
+        devices[slave.name] = device
+    return network, devices
+
+
+def make_plan(network: Network, devices: dict[str, Device], parameter_values: bool) -> NetworkPlan:
+    from ..network.plan import plan_network
+    from ..network.yamltree import NetworkError
+
+    try:
+        plan = plan_network(network, devices, parameter_values)
+    except NetworkError as error:
+        click.echo(str(error), err=True)
+        sys.exit(EXIT_USAGE)
+    for slave in plan.slaves:
+        for warning in slave.warnings:
+            click.echo(warning, err=True)
+    return plan
+
+
+@click.command(name="network")
+@click.argument("bus", type=click.Path(dir_okay=False))
+@click.option(
+    "-o", "--output", "outdir", type=click.Path(file_okay=False), help="Write master.dcf, <node>.bin, <node>.dcf here."
+)
+@click.option(
+    "--define", "defines", multiple=True, metavar="NAME=VALUE", help="Value of an @NAME@ placeholder (repeatable)."
+)
+@click.option(
+    "--dcf-dir",
+    "dcf_dirs",
+    multiple=True,
+    type=click.Path(file_okay=False),
+    help="Also look for nodes' `dcf` files here.",
+)
+@click.option("--no-parameter-values", is_flag=True, help="Do not write the DCFs' ParameterValues at boot (as dcfgen).")
+@click.option("-r", "--remote-pdo", is_flag=True, help="Also write lely's remote PDO objects (dcfgen -r).")
+@click.option("--no-node-dcf", is_flag=True, help="Do not write a DCF per node.")
+@click.option("--load", "show_load", is_flag=True, help="Print the bus load per bit rate.")
+@click.option(
+    "--data-bitrate", type=click.IntRange(1, 20_000), help="CAN FD data phase in kbit/s (--load, PDOs above 8 bytes)."
+)
+@click.option(
+    "--threshold", type=click.FloatRange(1, 100), default=70.0, show_default=True, help="Warn above this load (%)."
+)
+@click.option("--dbc", type=click.Path(dir_okay=False), help="Write every PDO of the network as a DBC file.")
+@click.option("--keep-going", is_flag=True, help="Go on despite errors in reading the nodes' files (printed).")
+@click.option("--check/--no-check", default=True, show_default=True, help="Refuse a network the checks find errors in.")
+def command(
+    bus: str,
+    outdir: str | None,
+    defines: tuple[str, ...],
+    dcf_dirs: tuple[str, ...],
+    no_parameter_values: bool,
+    remote_pdo: bool,
+    no_node_dcf: bool,
+    show_load: bool,
+    data_bitrate: int | None,
+    threshold: float,
+    dbc: str | None,
+    keep_going: bool,
+    check: bool,
+) -> None:
+    """Turn the bus description BUS (lely dcfgen's bus.yml, ros2_canopen's included) into the master's
+    configuration: master.dcf, one concise DCF (<node>.bin, CiA 302-3) per slave the master
+    configures at boot, and one DCF per node. All files or none. Exit 0, 1 with load above the
+    threshold or network errors, 2 when BUS cannot be turned into a network."""
+    if outdir is None and not show_load and dbc is None:
+        click.echo(
+            "cantools-od network: error: nothing to do: give -o OUTDIR, --load or --dbc FILE (see --help)", err=True
+        )
+        sys.exit(EXIT_USAGE)
+    network, devices = load_network(bus, defines, dcf_dirs, keep_going)
+    plan = make_plan(network, devices, not no_parameter_values)
+    failed = False
+    if check:
+        from ..lint.network import lint_bus
+
+        findings = lint_bus(plan)
+        for finding in findings:
+            click.echo(finding.format(), err=True)
+        failed = any(f.severity.value == "error" for f in findings)
+        if failed:
+            click.echo(f"{bus}: error: the network has errors: nothing written (--no-check writes anyway)", err=True)
+            sys.exit(EXIT_FINDINGS)
+    files: dict[Path, bytes] = {}
+    if outdir is not None:
+        from ..network.outputs import outputs
+
+        files.update(outputs(plan, Path(outdir), node_dcfs=not no_node_dcf, remote_pdo=remote_pdo))
+    if dbc is not None:
+        from ..network.dbc import network_dbc
+
+        files[Path(dbc)] = network_dbc(plan)
+    if files:
+        write_outputs(files)
+    if show_load:
+        from ..network.load import bus_load, format_load
+
+        report = bus_load(plan, data_bitrate)
+        click.echo(format_load(report, threshold), nl=False)
+        failed = failed or report.peak_percent > threshold
+    sys.exit(EXIT_FINDINGS if failed else EXIT_OK)

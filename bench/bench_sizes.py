@@ -10,7 +10,8 @@ then the whole corpus in one `lint` call, on one core and on all of them.
 size (the largest real one is 524 KB), the file is synthetic (bench/synthetic_eds.py). `diff` compares the
 file with a copy whose first ParameterName is changed. `load` is `cantools_od.load` in a fresh interpreter.
 The corpus `lint` runs with `--jobs 1` and `--jobs N` (N = cores) when lint has `--jobs`, else once, serial.
-Times are medians over the rounds (one round at 16 MB); peak RSS is the largest over them.
+Times (wall-clock, and CPU: user + system) are medians over the rounds (one round at 16 MB); peak RSS is
+the largest over them.
 """
 
 from __future__ import annotations
@@ -38,18 +39,21 @@ LOAD = "import sys, cantools_od; cantools_od.load(sys.argv[1])"
 Row = dict[str, object]
 
 
-def run_once(command: list[str]) -> tuple[float, int, int]:
-    """Wall-clock seconds, peak RSS in bytes and exit status of one process."""
+def run_once(command: list[str]) -> tuple[float, int, int, float]:
+    """Wall-clock seconds, peak RSS in bytes, exit status and CPU seconds (user + system) of one process."""
     start = time.perf_counter()
     process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     _, status, usage = os.wait4(process.pid, 0)
-    return time.perf_counter() - start, usage.ru_maxrss * 1024, os.waitstatus_to_exitcode(status)
+    cpu = usage.ru_utime + usage.ru_stime
+    return time.perf_counter() - start, usage.ru_maxrss * 1024, os.waitstatus_to_exitcode(status), cpu
 
 
 def measure(command: list[str], rounds: int) -> dict[str, float | int]:
+    """Medians over the rounds; CPU time is what a busy machine (other jobs on the cores) distorts least."""
     runs = [run_once(command) for _ in range(rounds)]
     return {
         "seconds": round(statistics.median(r[0] for r in runs), 3),
+        "cpu_seconds": round(statistics.median(r[3] for r in runs), 3),
         "peak_rss": max(r[1] for r in runs),
         "exit": runs[-1][2],
     }
@@ -125,13 +129,16 @@ def report(rows: list[Row], corpus: Row | None) -> str:
     lines = [head, "|" + "---:|" * (len(runs) + 1)]
     for row in rows:
         size = int(row["bytes"])  # type: ignore[call-overload]
-        cells = [cell(row[run], size).strip() for run in runs]
+        cells = [f"{cell(row[run], size).strip()}, cpu {row[run]['cpu_seconds']:.2f} s" for run in runs]  # type: ignore[index]
         lines.append(f"| {size / 1e3:,.0f} KB {row['file']} | {' | '.join(cells)} |")
     if corpus is not None:
         lines += ["", f"corpus, one lint call: {corpus['files']} files, {int(corpus['bytes']) / 1e6:.1f} MB"]  # type: ignore[call-overload]
         for run, result in corpus.items():
             if isinstance(result, dict):
-                lines.append(f"  {run}: {result['seconds']:.2f} s, peak {result['peak_rss'] / 1e6:.0f} MB")
+                lines.append(
+                    f"  {run}: {result['seconds']:.2f} s (cpu {result['cpu_seconds']:.2f} s), "
+                    f"peak {result['peak_rss'] / 1e6:.0f} MB"
+                )
     return "\n".join(lines)
 
 

@@ -306,6 +306,7 @@ def run(corpus: Path, rounds: int) -> Result:
         "ours": summary(everything),
         "canopen_fails": len(failures),
         "canopen_failures": failures,
+        "corpus_files": len(files),
         "refused": len(refused),
         "refusals": refused,
     }
@@ -364,7 +365,7 @@ def report(result: Result) -> str:
     out += [
         "",
         f"ratio ours/theirs on the common corpus: {common['ratio']:.2f} (target <= 0.50: {verdict})",
-        f"canopen fails on {every['canopen_fails']} of {len(every['canopen_failures']) + common['files']} corpus "
+        f"canopen fails on {every['canopen_fails']} of {every['corpus_files']} corpus "
         f"files; cantools-od refuses {every['refused']}"
         + "".join(f"\n  refused {name}: {why}" for name, why in every["refusals"].items()),
         f"synthetic EDS: {synth['objects']} objects, {synth['sub_objects']} sub-objects, {synth['lines']} lines, "

@@ -19,8 +19,10 @@ demo: $(STAMP)
 	$(BIN)/cantools-od gen eds/cia402_drive.eds -t c -t rust -t python -t markdown -o build/demo --name drive
 	@echo "generated:" && ls build/demo
 
+# One worker per core (pytest-xdist); a module whose tests share one expensive fixture (a built crate,
+# a venv, the peer matrix) is kept on one worker by its xdist_group mark, so the fixture is made once.
 test: $(STAMP)
-	cd tests && ../$(BIN)/python -m pytest -q -p no:cacheprovider ../tests
+	cd tests && ../$(BIN)/python -m pytest -q -p no:cacheprovider -n auto --dist loadgroup ../tests
 
 lint: $(STAMP)
 	$(BIN)/ruff check cantools_od tests bench

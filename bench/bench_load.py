@@ -257,14 +257,38 @@ def bench_dumps(largest: Path, rounds: int) -> Result:
     }
 
 
+def ours_readable(files: list[Path]) -> tuple[list[Path], dict[str, str]]:
+    """The files cantools-od reads, and why it refuses the others (an empty file is no device description)."""
+    readable: list[Path] = []
+    refused: dict[str, str] = {}
+    for path in files:
+        try:
+            load(path)
+        except Exception as error:  # a refusal is a result to count, not a reason to stop the benchmark
+            refused[path.name] = f"{type(error).__name__}: {str(error)[:100]}"
+        else:
+            readable.append(path)
+    return readable, refused
+
+
+def bench_largest(files: list[Path], rounds: int) -> Result:
+    """The largest file both read, alone: ours and theirs alternating."""
+    largest = max(files, key=lambda p: p.stat().st_size)
+    ours, theirs = alternate(load_all_ours([largest]), load_all_theirs([largest]), rounds)
+    result: Result = {"file": largest.name, "bytes": largest.stat().st_size, "ours": summary(ours)}
+    result["theirs"] = summary(theirs)
+    result["ratio"] = result["ours"]["median_s"] / result["theirs"]["median_s"]
+    return result
+
+
 def run(corpus: Path, rounds: int) -> Result:
     files = corpus_files(corpus)
     if not files:
         raise SystemExit(f"bench_load: no .eds/.dcf files in {corpus}")
-    # The first pass also warms both readers up (imports, grammar construction, caches).
-    readable, failures = canopen_readable(files)
-    for path in files:
-        load(path)
+    # The first passes also warm both readers up (imports, caches).
+    theirs_read, failures = canopen_readable(files)
+    ours_read, refused = ours_readable(files)
+    readable = [path for path in theirs_read if path in ours_read]
 
     ours, theirs = alternate(load_all_ours(readable), load_all_theirs(readable), rounds)
     common: Result = {
@@ -275,16 +299,19 @@ def run(corpus: Path, rounds: int) -> Result:
     }
     common["ratio"] = common["ours"]["median_s"] / common["theirs"]["median_s"]
 
-    everything = repeat(load_all_ours(files), rounds)
+    everything = repeat(load_all_ours(ours_read), rounds)
     all_files: Result = {
-        "files": len(files),
-        "bytes": sum(p.stat().st_size for p in files),
+        "files": len(ours_read),
+        "bytes": sum(p.stat().st_size for p in ours_read),
         "ours": summary(everything),
         "canopen_fails": len(failures),
         "canopen_failures": failures,
+        "corpus_files": len(files),
+        "refused": len(refused),
+        "refusals": refused,
     }
 
-    largest = max(files, key=lambda p: p.stat().st_size)
+    largest = max(ours_read, key=lambda p: p.stat().st_size)
     return {
         "corpus": str(corpus),
         "rounds": rounds,
@@ -293,6 +320,7 @@ def run(corpus: Path, rounds: int) -> Result:
         "canopen": getattr(canopen, "__version__", "?"),
         "corpus_common": common,
         "corpus_all": all_files,
+        "largest": bench_largest(readable, rounds),
         "synthetic": bench_synthetic(rounds),
         "dumps_largest": bench_dumps(largest, rounds),
     }
@@ -312,8 +340,8 @@ def _mib(size: int) -> str:
 
 def report(result: Result) -> str:
     common, every = result["corpus_common"], result["corpus_all"]
-    synth, dumped = result["synthetic"], result["dumps_largest"]
-    verdict = "OK" if common["ratio"] <= 1.0 else "SLOWER than target"
+    synth, dumped, big = result["synthetic"], result["dumps_largest"], result["largest"]
+    verdict = "OK" if common["ratio"] <= 0.5 else "SLOWER than target"
     out = [
         f"cantools-od {result['cantools_od']} vs python-canopen {result['canopen']} "
         f"(Python {result['python']}, median of {result['rounds']} alternating rounds)",
@@ -322,8 +350,10 @@ def report(result: Result) -> str:
         f"{'workload':<34}{'files':>6}{'bytes':>11}{'cantools-od':>14}{'canopen':>14}{'ratio':>8}",
         f"{'corpus, files canopen reads':<34}{common['files']:>6}{common['bytes']:>11}"
         f"{_ms(common['ours']['median_s']):>14}{_ms(common['theirs']['median_s']):>14}{common['ratio']:>8.2f}",
-        f"{'corpus, all files':<34}{every['files']:>6}{every['bytes']:>11}"
+        f"{'corpus, all files read':<34}{every['files']:>6}{every['bytes']:>11}"
         f"{_ms(every['ours']['median_s']):>14}{'-':>14}{'-':>8}",
+        f"{'largest: ' + big['file'][:25]:<34}{1:>6}{big['bytes']:>11}"
+        f"{_ms(big['ours']['median_s']):>14}{_ms(big['theirs']['median_s']):>14}{big['ratio']:>8.2f}",
     ]
     theirs = synth["theirs"]
     out.append(
@@ -334,8 +364,10 @@ def report(result: Result) -> str:
     )
     out += [
         "",
-        f"ratio ours/theirs on the common corpus: {common['ratio']:.2f} (target <= 1.00: {verdict})",
-        f"canopen fails on {every['canopen_fails']} of {every['files']} corpus files",
+        f"ratio ours/theirs on the common corpus: {common['ratio']:.2f} (target <= 0.50: {verdict})",
+        f"canopen fails on {every['canopen_fails']} of {every['corpus_files']} corpus "
+        f"files; cantools-od refuses {every['refused']}"
+        + "".join(f"\n  refused {name}: {why}" for name, why in every["refusals"].items()),
         f"synthetic EDS: {synth['objects']} objects, {synth['sub_objects']} sub-objects, {synth['lines']} lines, "
         f"{_mib(synth['bytes'])}; {synth['diagnostic_errors']} error diagnostics",
         f"peak memory of one synthetic load (tracemalloc): {_mib(synth['peak_memory_bytes'])}",

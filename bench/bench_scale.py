@@ -75,16 +75,17 @@ def report(rows: list[dict[str, object]]) -> str:
     lines = [head, "-" * len(head)]
     for row in rows:
         size = int(row["bytes"])  # type: ignore[call-overload]
-        cells = []
-        for run in runs:
-            result = row[run]
-            assert isinstance(result, dict)
-            rss = result["peak_rss"]
-            flag = "" if result["exit"] in (0, 1) else f" exit {result['exit']}"
-            ratio = rss / result.get("bytes", size)
-            cells.append(f"{result['seconds']:>7.1f} s {rss / 1e6:>6.0f} MB {ratio:>4.1f}x{flag}")
+        cells = [cell(row[run], size) for run in runs]
         lines.append(f"{size / 1e6:>6.1f} MB {row['sections']:>9}" + "".join(f" | {c:>24}" for c in cells))
     return "\n".join(lines)
+
+
+def cell(result: object, size: int) -> str:
+    """One run as `time, peak RSS and its ratio to the file size`, with an unexpected exit status."""
+    assert isinstance(result, dict)
+    rss = result["peak_rss"]
+    flag = "" if result["exit"] in (0, 1) else f" exit {result['exit']}"
+    return f"{result['seconds']:>7.2f} s {rss / 1e6:>6.0f} MB {rss / result.get('bytes', size):>4.1f}x{flag}"
 
 
 def main(argv: list[str] | None = None) -> int:

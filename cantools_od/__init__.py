@@ -16,7 +16,7 @@ __all__ = ["Device", "__version__", "diff", "dumps", "load", "loads", "save", "t
 
 
 def __getattr__(name: str) -> Any:
-    # Lazy, so that `cantools-od --version` does not pay for pydantic and lark.
+    # Lazy, so that `cantools-od --version` does not pay for pydantic.
     if name in ("dumps", "load", "loads", "save"):
         from . import api
 

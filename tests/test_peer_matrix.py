@@ -12,6 +12,9 @@ from peermatrix import Difference, FileResult, Judgement, judge, judge_all, real
 
 from support import corpus_devices
 
+# Its tests share one module fixture: under pytest-xdist they run on one worker, which makes it once.
+pytestmark = pytest.mark.xdist_group("peer_matrix")
+
 # python-canopen reads the default of a signed type written in hex as an unsigned number; CiA 306 (value
 # definitions: a hex number is the bit pattern of the type) makes it the two's complement. Ours writes the
 # signed value in decimal, which python-canopen reads right.

@@ -12,6 +12,9 @@ import pytest
 
 from support import EXAMPLES, ROOT
 
+# Its tests share one module fixture: under pytest-xdist they run on one worker, which makes it once.
+pytestmark = pytest.mark.xdist_group("precommit")
+
 BAD = """[1000]
 ParameterName=Device type
 DataType=0x0007

@@ -64,18 +64,23 @@ def _lely(section: IniSection) -> bool:
 
 
 def _other(section: IniSection) -> Dialect | None:
-    if any(c.startswith((";StorageLocation", ";TPDODetectCos")) for c in section.comments):
+    if any(c.startswith(_CANOPENNODE_COMMENTS) for c in section.comments):
         return Dialect.CANOPENNODE
     for entry in section.entries:
-        if entry.comments and entry.comments[0].startswith((";StorageLocation", ";TPDODetectCos")):
+        if entry.comments and entry.comments[0].startswith(_CANOPENNODE_COMMENTS):
             return Dialect.CANOPENNODE
-        if entry.key.lower() == "createdby" and re.search("canopen(node|editor)|libedssharp", entry.value, re.I):
+        key, value = entry.key, entry.value
+        if len(key) == 9 and key.lower() == "createdby" and _CANOPENNODE_TOOL.search(value):
             return Dialect.CANOPENNODE
-        if _NODEID_LAST.search(entry.value):
+        if "$" in value and _NODEID_LAST.search(value):
             return Dialect.PYTHON_CANOPEN
-        if entry.key.lower() == "edsversion" and entry.value.strip() == "4.2":
+        if len(key) == 10 and key.lower() == "edsversion" and value.strip() == "4.2":
             return Dialect.PYTHON_CANOPEN
     return None
+
+
+_CANOPENNODE_COMMENTS = (";StorageLocation", ";TPDODetectCos")
+_CANOPENNODE_TOOL = re.compile("canopen(node|editor)|libedssharp", re.IGNORECASE)
 
 
 def unquote(text: str) -> str | None:

@@ -1,7 +1,8 @@
 """CiA 306 files as sections of lines, with positions, before any meaning is given.
 
-The lark grammar in file.lark finds the sections; each body is then split into
-comment, blank, entry and stray lines with one regular expression.
+A section is its header line and every line after it up to the next header line (a line whose
+first non-blank character is "["); the lines before the first header are the preamble. Each body
+is then split into comment, blank, entry and stray lines.
 """
 
 from __future__ import annotations
@@ -9,10 +10,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from functools import cache
-from importlib import resources
-
-from lark import Lark, Token
+from itertools import chain
 
 
 @dataclass(slots=True)
@@ -60,12 +58,18 @@ def split_lines(text: str) -> list[str]:
 
 
 _HEADER = re.compile(r"([ \t]*)\[([^\]\r\n]*)(\]?)")
+# A header line after a line end (CR, LF, CRLF), from its line end on; the text's first line is matched
+# on its own. (A look-behind for the line end would take the regular expression engine four times as long.)
+_HEADER_AFTER_EOL = re.compile(r"[\r\n]([ \t]*\[([^\]\r\n]*))")
+_HEADER_FIRST = re.compile(r"([ \t]*\[([^\]\r\n]*))")
 
 
-@cache
-def _parser() -> Lark:
-    grammar = resources.files("cantools_od.eds").joinpath("file.lark").read_text()
-    return Lark(grammar, parser="lalr", lexer="basic", maybe_placeholders=False)
+def _headers(text: str) -> Iterator[re.Match[str]]:
+    """Each header line's match, group 1 from its start and group 2 its name up to "]"."""
+    first = _HEADER_FIRST.match(text)
+    if first is not None:
+        yield first
+    yield from _HEADER_AFTER_EOL.finditer(text)
 
 
 def parse(text: str) -> IniFile:
@@ -96,12 +100,13 @@ class Stream:
 
     def __iter__(self) -> Iterator[IniSection]:
         pending: list[str] = []
-        line = 1  # counted here: lark counts only "\n", files also end lines with a lone "\r"
-        for token in self._tokens():
+        line = 1  # lines end with CR, LF or CRLF
+        for is_section, token in self._tokens():
             lines = _EOL.split(token)
             first, line = line, line + len(lines) - 1
-            self.long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
-            if token.type == "PREAMBLE":
+            if len(token) > MAX_LINE and max(map(len, lines)) > MAX_LINE:
+                self.long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
+            if not is_section:
                 trailing: list[str] = []
                 _split_body(lines, first, 0, [], trailing, self.preamble_stray)
                 pending = trailing
@@ -122,13 +127,20 @@ class Stream:
             yield section
         self.trailing = pending
 
-    def _tokens(self) -> Iterator[Token]:
+    def _tokens(self) -> Iterator[tuple[bool, str]]:
+        """(is a section, its text with its line ends) in file order; the preamble is no section."""
         for piece in self.pieces:
-            yield from _parser().lex(piece)
+            start, is_section = 0, False  # what begins at `start`
+            for match in _headers(piece):
+                if match.start(1) > start:
+                    yield is_section, piece[start : match.start(1)]
+                start, is_section = match.start(1), True
+            if start < len(piece):
+                yield is_section, piece[start:]
 
 
-_HEADER_LINE = re.compile(r"(?:\A|(?<=[\r\n]))[ \t]*\[([^\]\r\n]*)")
-_HEADER_LINE_BYTES = re.compile(_HEADER_LINE.pattern.encode("ascii"))
+_HEADER_LINE_BYTES = re.compile(_HEADER_AFTER_EOL.pattern.encode("ascii"))
+_HEADER_FIRST_BYTES = re.compile(_HEADER_FIRST.pattern.encode("ascii"))
 
 
 def repeated_section_names(text: str | bytes) -> set[str]:
@@ -137,9 +149,11 @@ def repeated_section_names(text: str | bytes) -> set[str]:
     Names are remembered by hash, which keeps this small for a large file; a rare collision only
     adds a name that is given once."""
     if isinstance(text, str):
-        names: Iterator[str] = (match.group(1) for match in _HEADER_LINE.finditer(text))
+        names: Iterator[str] = (match.group(2) for match in _headers(text))
     else:
-        names = (match.group(1).decode("utf-8", "replace") for match in _HEADER_LINE_BYTES.finditer(text))
+        first = _HEADER_FIRST_BYTES.match(text)
+        found_bytes = chain([first] if first is not None else [], _HEADER_LINE_BYTES.finditer(text))
+        names = (match.group(2).decode("utf-8", "replace") for match in found_bytes)
     seen: set[int] = set()
     repeated: set[str] = set()
     for found in names:
@@ -170,16 +184,17 @@ def _split_body(
             continue
         bare_key = key.rstrip(" \t")
         bare_value = value.lstrip(" \t")
-        indent = len(raw) - len(raw.lstrip(" \t"))
+        indent = len(raw) - len(raw.lstrip(" \t")) if raw[0] in " \t" else 0
+        spaced = len(bare_key) != len(key) or len(bare_value) != len(value)
         entries.append(
             Entry(
                 bare_key,
                 bare_value,
                 line,
                 indent + 1,
-                indent + len(key) + 2 + len(value) - len(bare_value),
+                indent + len(key) + 2 + len(value) - len(bare_value) if spaced else indent + len(key) + 2,
                 tuple(comments) if comments else (),
-                len(bare_key) != len(key) or len(bare_value) != len(value),
+                spaced,
             )
         )
         if comments:

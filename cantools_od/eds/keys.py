@@ -7,6 +7,7 @@ Key names are matched case-insensitively and without blanks
 from __future__ import annotations
 
 from enum import Enum
+from functools import lru_cache
 
 
 class Kind(Enum):
@@ -17,10 +18,15 @@ class Kind(Enum):
     ACCESS = "access"
     VALUE = "value"  # typed by the entry's data type
 
+    # Members are singletons: hashing by identity keeps the reader's caches keyed by kind cheap
+    # (Enum's own hash is a Python call on the member's name).
+    __hash__ = object.__hash__
+
 
 KeySpec = tuple[str, str, Kind]  # canonical spelling, model field, kind
 
 
+@lru_cache(maxsize=1024)  # the few key spellings of a file, each seen once per section
 def normalize(key: str) -> str:
     return key.replace(" ", "").replace("\t", "").lower()
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any, NoReturn
 
 from ..model import AccessType, ObjectKind, Origin, RawSection
@@ -103,6 +104,7 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
     return collected
 
 
+@lru_cache(maxsize=4096)  # files repeat a few texts per key thousands of times; errors are not kept
 def convert(text: str, kind: Kind) -> Any:
     """A key's text as its kind; None for an empty value. Raises ValueError."""
     if kind is Kind.STR:

@@ -18,10 +18,10 @@ def type_entry(device: Device, var: Variable, owner: Object, field: str, entry: 
     if kind is ValueKind.STRING and device.dialect is Dialect.LELY:
         unquoted = unquote(text)
         if unquoted is not None:
-            setattr(var, field, unquoted)
+            var.__dict__[field] = unquoted  # the reader's own instance: no validation to run
             return
     parsed = parse_value(text, kind, dtype.bits if dtype else None, dtype.name if dtype else "this type")
-    setattr(var, field, parsed.value)
+    var.__dict__[field] = parsed.value
     for code, severity, message in parsed.notes:
         report.add(code, severity, f"{entry.key}: {message}", entry.line, entry.value_col)
     if parsed.comment is not None:

@@ -1,8 +1,8 @@
 """Text of one entry → typed value, with notes on anything unusual.
 
-Integers go through a lark grammar (value.lark) unless they are a plain
-decimal or hex number; results are cached by text, since real files repeat
-the same few values thousands of times.
+Integers are read by a small tokenizer (an optional "-", then operands joined by operators)
+unless they are a plain decimal or hex number; results are cached by text, since real files
+repeat the same few values thousands of times.
 """
 
 from __future__ import annotations
@@ -10,10 +10,7 @@ from __future__ import annotations
 import re
 import struct
 from dataclasses import dataclass
-from functools import cache, lru_cache
-from importlib import resources
-
-from lark import Lark, LarkError, Token
+from functools import lru_cache
 
 from ..model import NodeIdExpr, RawValue, Severity, TimeValue, Value, ValueKind
 
@@ -33,10 +30,40 @@ _INLINE_COMMENT = re.compile(r"[ \t]+[;#]")
 _SUFFIX = re.compile(r"[uUlL]+\Z")
 
 
-@cache
-def _grammar() -> Lark:
-    text = resources.files("cantools_od.eds").joinpath("value.lark").read_text()
-    return Lark(text, parser="lalr")
+# An integer expression: blanks, then terms. A number is hex, octal (a leading 0) or decimal, each
+# with an optional C suffix; "-" before the first operand negates it, between operands it subtracts.
+_BLANKS = re.compile(r"[ \t]+")
+_TERM = re.compile(
+    r"(?P<NODEID>(?i:\$nodeid))"
+    r"|(?P<NUMBER>(?:0[xX][0-9a-fA-F]+|0[0-9]+|[0-9]+)(?:[uU]?[lL]{1,2}|[lL]{1,2}[uU]|[uU])?)"
+    r"|(?P<OP>[-+*/])"
+)
+
+
+def _after_blanks(text: str, position: int) -> int:
+    blanks = _BLANKS.match(text, position)
+    return position if blanks is None else blanks.end()
+
+
+def _terms(text: str) -> list[tuple[str, str]]:
+    """(MINUS | OP | NODEID | NUMBER, text) of an expression `-? operand (op operand)*`; raises ValueError."""
+    found: list[tuple[str, str]] = []
+    position = _after_blanks(text, 0)
+    while position < len(text):
+        match = _TERM.match(text, position)
+        if match is None:
+            raise ValueError(f"{text!r} is not a number")
+        kind = match.lastgroup or ""
+        operand_due = not found or found[-1][0] in ("MINUS", "OP")
+        if kind == "OP" and not found and match.group() == "-":
+            kind = "MINUS"
+        elif (kind == "OP") == operand_due:  # an operator where an operand is due, or two operands in a row
+            raise ValueError(f"{text!r} is not a number")
+        found.append((kind, match.group()))
+        position = _after_blanks(text, match.end())
+    if not found or found[-1][0] in ("MINUS", "OP"):
+        raise ValueError(f"{text!r} is not a number")
+    return found
 
 
 def _number(token: str) -> tuple[int, list[Note]]:
@@ -61,27 +88,25 @@ def _number(token: str) -> tuple[int, list[Note]]:
 
 
 def _parse_integer_expr(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
-    tree = _grammar().parse(text)
-    tokens = [t for t in tree.scan_values(lambda v: isinstance(v, Token))]
     notes: list[Note] = []
     total = 0
     nodeid_at: int | None = None
     sign = 1
     operands = 0
-    for token in tokens:
-        if token.type == "MINUS":
+    for kind, token in _terms(text):
+        if kind == "MINUS":
             sign = -1
-        elif token.type == "OP":
+        elif kind == "OP":
             if token in "*/":
                 raise ValueError(f"{text!r}: only + may combine terms")
             sign = 1 if token == "+" else -1
-        elif token.type == "NODEID":
+        elif kind == "NODEID":
             if nodeid_at is not None or sign < 0:
                 raise ValueError(f"{text!r}: $NODEID may appear once and only be added")
             nodeid_at = operands
             operands += 1
         else:
-            value, number_notes = _number(str(token))
+            value, number_notes = _number(token)
             notes.extend(number_notes)
             total += sign * value
             operands += 1
@@ -110,10 +135,7 @@ def parse_int(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
     """An integer or `$NODEID` sum; raises ValueError when it is neither."""
     if _PLAIN_INT.match(text):
         return int(text, 0), []
-    try:
-        return _parse_integer_expr(text)
-    except LarkError as error:
-        raise ValueError(f"{text!r} is not a number") from error
+    return _parse_integer_expr(text)
 
 
 @lru_cache(maxsize=65536)

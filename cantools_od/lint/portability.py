@@ -11,10 +11,8 @@ from collections.abc import Iterator
 
 from ..eds import keys
 from ..model import (
-    Device,
     Dialect,
     NodeIdExpr,
-    Object,
     ObjectKind,
     Section,
     Severity,
@@ -24,6 +22,7 @@ from ..model import (
 from ..model.cia301.objects import DATA_TYPE_AREA
 from ..model.cia301.pdo import DUMMY_TYPES
 from ..model.datatypes import BASIC_TYPE_RANGE
+from .common import explicit_vars, where
 from .rules import Context, Finding, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
 
@@ -31,17 +30,6 @@ W, INFO = Severity.WARNING, Severity.INFO
 
 _EXTENSION_KEYS = {keys.normalize(key) for key in EXTENSION_KEYS}
 _STRING_FIELDS = (("ParameterName", "name"), ("Denotation", "denotation"))
-
-
-def _vars(device: Device) -> Iterator[tuple[Object, str, Variable]]:
-    """Objects and sub-objects with a section of their own, with a label for messages."""
-    for obj in device.objects.values():
-        if obj.implicit:
-            continue
-        yield obj, f"[{obj.index:04X}]", obj
-        for subindex, sub in obj.subs.items():
-            if not sub.implicit:
-                yield obj, f"[{obj.index:04X}sub{subindex:X}]", sub
 
 
 @rule(
@@ -83,13 +71,13 @@ def quoted_strings(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
     if device.dialect is Dialect.LELY:
         return
-    for obj, label, var in _vars(device):
+    for obj, subindex, var in explicit_vars(device):
         dtype = device.entry_type(var, obj)
         if dtype is None or dtype.kind is not ValueKind.STRING:
             continue
         for key, value in (("DefaultValue", var.default), ("ParameterValue", var.parameter_value)):
             if isinstance(value, str) and len(value) >= 2 and value[0] == value[-1] == '"':
-                message = f"{label} {key}={value}: lely strips the quotes, other tools keep them"
+                message = f"{where(obj, subindex)} {key}={value}: lely strips the quotes, other tools keep them"
                 yield ctx.report("DIA002", message, ctx.value_at(var, key))
 
 
@@ -112,7 +100,7 @@ def real_values(ctx: Context) -> Iterator[Finding]:
     if device.dialect is not Dialect.LELY:
         return  # decimals: what python-canopen and CANopenNode read
     found: list[tuple[Variable, str]] = []
-    for obj, _, var in _vars(device):
+    for obj, _, var in explicit_vars(device):
         dtype = device.entry_type(var, obj)
         if dtype is not None and dtype.kind is ValueKind.REAL:
             found.extend((var, key) for key, field in _VALUE_KEYS if isinstance(getattr(var, field), float))
@@ -182,7 +170,7 @@ CANopenNode's code generators. Reported once per file.""",
 )
 def extension_comments(ctx: Context) -> Iterator[Finding]:
     found: list[Section] = []
-    for _, _, var in _vars(ctx.device):
+    for _, _, var in explicit_vars(ctx.device):
         lines = (line for block in var.comments.values() for line in block)
         if any(line.startswith((";StorageLocation", ";TPDODetectCos")) for line in lines):
             found.append(var)
@@ -211,11 +199,13 @@ mangled names. VISIBLE_STRING values are checked by EDS038.""",
 )
 def non_ascii(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
-    for _, label, var in _vars(device):
+    for owner, subindex, var in explicit_vars(device):
         for key, field in _STRING_FIELDS:  # VISIBLE_STRING values: EDS038
             value = getattr(var, field)
             if isinstance(value, str) and not value.isascii():
-                yield ctx.report("DIA007", f"{label} {key}: {value!r} is not ASCII", ctx.value_at(var, key))
+                yield ctx.report(
+                    "DIA007", f"{where(owner, subindex)} {key}: {value!r} is not ASCII", ctx.value_at(var, key)
+                )
     tables: tuple[tuple[str, Section, dict[str, keys.KeySpec]], ...] = (
         ("FileInfo", device.file_info, keys.FILE_INFO_KEYS),
         ("DeviceInfo", device.device_info, keys.DEVICE_INFO_KEYS),
@@ -244,12 +234,15 @@ not support it. Undefined custom types are reported by EDS080.""",
 )
 def custom_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
-    for _, label, var in _vars(ctx.device):
+    for owner, subindex, var in explicit_vars(ctx.device):
         dtype = var.data_type
-        custom = dtype in DATA_TYPE_AREA and dtype not in BASIC_TYPE_RANGE
+        # (`None in range(...)` would compare None with every number of the range)
+        custom = dtype is not None and dtype in DATA_TYPE_AREA and dtype not in BASIC_TYPE_RANGE
         definition = objects.get(dtype) if dtype is not None and custom else None
         if definition is not None and definition.kind in (ObjectKind.DEFTYPE, ObjectKind.DEFSTRUCT):
-            message = f"{label} DataType=0x{dtype:04X} (a custom type); python-canopen reads it as DOMAIN"
+            message = (
+                f"{where(owner, subindex)} DataType=0x{dtype:04X} (a custom type); python-canopen reads it as DOMAIN"
+            )
             yield ctx.report("DIA008", message, ctx.value_at(var, "DataType"))
 
 
@@ -305,10 +298,10 @@ they are not CiA 306 keys, and lely dcfchk rejects them as invalid entries.""",
     ),
 )
 def extension_keys(ctx: Context) -> Iterator[Finding]:
-    for _, label, var in _vars(ctx.device):
+    for owner, subindex, var in explicit_vars(ctx.device):
         for key in var.extra:
             if keys.normalize(key) in _EXTENSION_KEYS:
-                message = f"{label} {key}: read by python-canopen only; lely rejects it"
+                message = f"{where(owner, subindex)} {key}: read by python-canopen only; lely rejects it"
                 yield ctx.report("DIA010", message, ctx.at(var, key))
 
 
@@ -363,13 +356,13 @@ CiA 306 does not specify how TIME_OF_DAY and TIME_DIFFERENCE values are written.
 )
 def time_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
-    for obj, label, var in _vars(device):
+    for obj, subindex, var in explicit_vars(device):
         dtype = device.entry_type(var, obj)
         if dtype is None or dtype.kind is not ValueKind.TIME:
             continue
         for key, field in _VALUE_KEYS:
             if getattr(var, field) is not None:
-                message = f"{label} {key} of {dtype.name}: no portable text form"
+                message = f"{where(obj, subindex)} {key} of {dtype.name}: no portable text form"
                 yield ctx.report("DIA013", message, ctx.value_at(var, key))
 
 
@@ -390,10 +383,10 @@ and CANopenNode drop or reject such limits.""",
     ),
 )
 def nodeid_limits(ctx: Context) -> Iterator[Finding]:
-    for _, label, var in _vars(ctx.device):
+    for owner, subindex, var in explicit_vars(ctx.device):
         for key, value in (("LowLimit", var.low_limit), ("HighLimit", var.high_limit)):
             if isinstance(value, NodeIdExpr):
-                message = f"{label} {key}={value.canonical()}: only lely reads $NODEID in limits"
+                message = f"{where(owner, subindex)} {key}={value.canonical()}: only lely reads $NODEID in limits"
                 yield ctx.report("DIA014", message, ctx.value_at(var, key))
 
 
@@ -408,11 +401,11 @@ python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key o
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
-    for _, label, var in _vars(ctx.device):
+    for owner, subindex, var in explicit_vars(ctx.device):
         written = var.origin is not None and var.origin.where("PDOMapping") is not None
         invalid = any(keys.normalize(k) == "pdomapping" for k in var.extra)  # the reader reported it
         if written and var.pdo_mapping is None and not invalid:
-            message = f"{label} PDOMapping is empty; python-canopen fails on it"
+            message = f"{where(owner, subindex)} PDOMapping is empty; python-canopen fails on it"
             yield ctx.report("DIA015", message, ctx.at(var, "PDOMapping"))
 
 
@@ -431,7 +424,11 @@ unknown option and the lely code generator drops it. Reported once per file.""",
     ),
 )
 def obj_flags(ctx: Context) -> Iterator[Finding]:
-    found = [(label, var) for _, label, var in _vars(ctx.device) if var.obj_flags and not var.obj_flags & ~0x3]
+    found = [
+        (where(obj, subindex), var)
+        for obj, subindex, var in explicit_vars(ctx.device)
+        if var.obj_flags and not var.obj_flags & ~0x3
+    ]
     if found:
         label, var = found[0]
         message = f"{_count(found, 'entry', 'entries')} with ObjFlags (first {label}); lely swaps bits 0 and 1"
@@ -459,13 +456,13 @@ a blank, so those tools read a truncated name or string. Reported once per file.
 def comment_characters(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
     found: list[tuple[str, Variable, str]] = []
-    for obj, label, var in _vars(device):
+    for obj, subindex, var in explicit_vars(device):
         dtype = device.entry_type(var, obj)
         fields = [*_STRING_FIELDS]
         if dtype is not None and dtype.kind is ValueKind.STRING:
             fields += [("DefaultValue", "default"), ("ParameterValue", "parameter_value")]
         found.extend(
-            (f"{label} {key}", var, key)
+            (f"{where(obj, subindex)} {key}", var, key)
             for key, field in fields
             if isinstance(getattr(var, field), str) and ("#" in getattr(var, field) or ";" in getattr(var, field))
         )

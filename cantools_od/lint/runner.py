@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..model import Device, Severity
-from ..xdd.reader import refused
+from ..xdd import refused
 from .codes import load as load_families
 from .config import Selection
 from .reader import reader_fix

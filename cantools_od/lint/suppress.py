@@ -13,6 +13,8 @@ _DIRECTIVE = re.compile(r"[;#]\s*cantools-od\s*:\s*ignore\s+([A-Za-z0-9_, ]+)", 
 def _codes(comments: list[str]) -> set[str]:
     found: set[str] = set()
     for comment in comments:
+        if "cantools-od" not in comment.lower():
+            continue
         match = _DIRECTIVE.match(comment)
         if match:
             found.update(code.strip().upper() for code in match.group(1).split(",") if code.strip())
@@ -28,16 +30,18 @@ class Suppressions:
             origin = section.origin
             if origin is None or not section.comments:
                 continue
-            whole = _codes(section.comments.get("", []))
+            by_key = {key: codes for key, comments in section.comments.items() if (codes := _codes(comments))}
+            if not by_key:
+                continue  # the common case: comments, but no directive among them
+            whole = by_key.pop("", set())
             positions = list(origin.positions())
             last = max([origin.line, *(where[0] for _, where in positions)])
             if whole:
                 for line in range(origin.line, last + 1):
                     self.by_line.setdefault(line, set()).update(whole)
             for key, where in positions:
-                codes = _codes(section.comments.get(key, []))
-                if codes:
-                    self.by_line.setdefault(where[0], set()).update(codes)
+                if key in by_key:
+                    self.by_line.setdefault(where[0], set()).update(by_key[key])
 
     def silenced(self, code: str, line: int) -> bool:
         return code in self.by_line.get(line, ())

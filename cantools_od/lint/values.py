@@ -8,9 +8,20 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
-from ..model import DataType, Location, NodeIdExpr, Object, ObjectKind, Severity, TimeValue, Value, ValueKind, Variable
+from ..model import (
+    DataType,
+    Location,
+    NodeIdExpr,
+    Object,
+    ObjectKind,
+    Severity,
+    SubObject,
+    TimeValue,
+    Value,
+    ValueKind,
+    Variable,
+)
 from ..model.datatypes import TIME_OF_DAY
 from . import examples as ex
 from .rules import Context, Finding, rule
@@ -25,16 +36,31 @@ _TIME_OF_DAY_MS = 86_400_000
 _ALL_NODE_IDS = tuple(range(1, 128))
 
 
-@dataclass(frozen=True)
 class Entry:
-    """One entry with values: `limits` is where its limits come from (the object, for CompactSubObj subs)."""
+    """One entry with values: `limits` is where its limits come from (the object, for CompactSubObj subs).
 
-    owner: Object
-    label: str
-    var: Variable
-    limits: Variable
-    dtype: DataType | None
-    implicit: bool  # a CompactSubObj sub-object: only its [xxxxValue] value is its own
+    Made anew by each rule that walks the entries (keeping them would cost a large file memory), so
+    it is a plain slotted class and its label is made only for a message."""
+
+    __slots__ = ("dtype", "implicit", "limits", "owner", "subindex", "var")
+
+    def __init__(
+        self, owner: Object, subindex: int | None, var: Variable, limits: Variable, dtype: DataType | None
+    ) -> None:
+        self.owner = owner
+        self.subindex = subindex  # None for the object itself
+        self.var = var
+        self.limits = limits
+        self.dtype = dtype
+        # A CompactSubObj sub-object: only its [xxxxValue] value is its own.
+        self.implicit = isinstance(var, SubObject) and var.implicit
+
+    @property
+    def label(self) -> str:
+        index = self.owner.index
+        if self.subindex is None:
+            return f"[{index:04X}]"
+        return f"[{index:04X}Value] {self.subindex}" if self.implicit else f"[{index:04X}sub{self.subindex:X}]"
 
     def values(self) -> Iterator[tuple[str, Value]]:
         for key, field in _KEYS:
@@ -46,19 +72,20 @@ class Entry:
 def entries(ctx: Context) -> Iterator[Entry]:
     """Every entry whose values are its own, once: a CompactSubObj object stands for the subs it copies into."""
     device = ctx.device
+    entry_type = device.entry_type
     for obj in device.objects.values():
         if obj.implicit:
             continue  # CompactPDO: made up from the standard, not from the file
         compound = obj.kind in _COMPOUND
         if not compound or obj.compact_sub_obj:
-            yield Entry(obj, f"[{obj.index:04X}]", obj, obj, device.entry_type(obj, obj), False)
+            yield Entry(obj, None, obj, obj, entry_type(obj, obj))
         if not compound:
             continue
         for subindex, sub in obj.subs.items():
-            label = f"[{obj.index:04X}Value] {subindex}" if sub.implicit else f"[{obj.index:04X}sub{subindex:X}]"
-            limits = obj if sub.implicit else sub
-            if not (sub.implicit and subindex == 0):
-                yield Entry(obj, label, sub, limits, device.entry_type(sub, obj), sub.implicit)
+            if not sub.implicit:
+                yield Entry(obj, subindex, sub, sub, entry_type(sub, obj))
+            elif subindex != 0:
+                yield Entry(obj, subindex, sub, obj, entry_type(sub, obj))
 
 
 def _at(ctx: Context, entry: Entry, key: str) -> Location:

@@ -1,4 +1,23 @@
-"""CiA 311 XML device descriptions (XDD, XDC): reader and writers."""
+"""CiA 311 XML device descriptions (XDD, XDC): reader and writers.
+
+What lint and gen ask of every device is here, apart from the reader, so that checking an EDS
+does not import the XML parser (and, through it, urllib, ssl and email).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from ..model import Device
+
+# Codes after which no model of the file exists: not XML, hostile XML, too large, not CiA 311.
+REFUSED_CODES = ("XDD001", "XDD002", "XDD003", "XDD004")
+
+
+def refused(device: Device) -> bool:
+    """Whether the reader refused the file: nothing read from it may replace it or stand for it."""
+    return any(d.code in REFUSED_CODES for d in device.diagnostics)
 
 
 def is_xml(data: bytes) -> bool:

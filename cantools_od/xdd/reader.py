@@ -12,20 +12,13 @@ from typing import Any
 
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
+from . import REFUSED_CODES as REFUSED_CODES  # where writers and tests have always found them
+from . import refused as refused
 from .context import ReadContext
 from .fragments import fragment, one_line
 from .objects import ObjectReader
 from .safe import Element, XmlRefused, parse, utf8_form
 from .vocabulary import KNOWN_ELEMENTS, NAMESPACES, XSI, standard_header
-
-# Codes after which no model of the file exists: not XML, hostile XML, too large, not CiA 311.
-REFUSED_CODES = ("XDD001", "XDD002", "XDD003", "XDD004")
-
-
-def refused(device: Device) -> bool:
-    """Whether the reader refused the file: nothing read from it may replace it or stand for it."""
-    return any(d.code in REFUSED_CODES for d in device.diagnostics)
-
 
 RAW_PREFIX = "XDD."
 

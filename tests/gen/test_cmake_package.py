@@ -16,6 +16,9 @@ from pathlib import Path
 import pytest
 from ckit import ROOT, tool
 
+# Its tests share one module fixture: under pytest-xdist they run on one worker, which makes it once.
+pytestmark = pytest.mark.xdist_group("cmake_package")
+
 GENERATORS = {"Ninja": "ninja", "Unix Makefiles": "make"}
 
 PROJECT = """\

@@ -17,6 +17,9 @@ from cantools_od.cli.gen import command, default_name
 
 from support import corpus_files
 
+# Its tests share one module fixture: under pytest-xdist they run on one worker, which makes it once.
+pytestmark = pytest.mark.xdist_group("rust_corpus")
+
 
 @dataclass
 class Sweep:

@@ -29,6 +29,9 @@ from cantools_od.render.rust import module as rust_module
 
 from support import CORPUS
 
+# Its tests share one module fixture: under pytest-xdist they run on one worker, which makes it once.
+pytestmark = pytest.mark.xdist_group("rust_crate")
+
 NODE_ID = 5
 SEED = 20250115
 CASES = 16

@@ -37,19 +37,29 @@ from dataclasses import dataclass, field
 
 from ..identifiers import RESERVED
 from ..model import (
-    AccessType,
     CanopenNodeInfo,
     DataType,
     Device,
     NodeIdExpr,
     Object,
     ObjectKind,
+    RawValue,
     TimeValue,
     Value,
     ValueKind,
     Variable,
 )
-from ..model.canopennode import count_label_for, stack_reads_at_init, standard_storage_group
+from ..model.canopennode import (
+    count_label_for,
+    editor_octets,
+    editor_pdo_word,
+    editor_real,
+    pdo_bits_pair,
+    pdo_directions,
+    sdo_directions,
+    stack_reads_at_init,
+    standard_storage_group,
+)
 from ..model.datatypes import DOMAIN
 
 VAR, ARR, REC = "VAR", "ARR", "REC"
@@ -222,10 +232,8 @@ def value_bytes(dtype: DataType, value: Value | None, length: int) -> bytes | No
 
 def _attributes(dtype: DataType, var: Variable, info: CanopenNodeInfo | None) -> Attributes:
     access = var.access
-    sdo = {AccessType.WO: "W", AccessType.RO: "R", AccessType.CONST: "R", None: ""}.get(access, "RW")
-    pdo = ""
-    if var.pdo_mapping:
-        pdo = {AccessType.WO: "R", AccessType.RWW: "R", AccessType.RW: "TR", None: ""}.get(access, "T")
+    sdo = sdo_directions(access.value if access else None)
+    pdo = pdo_directions(var.pdo_mapping_kind(), access.value if access else None)
     srdo = {"tx": "T", "rx": "R", "trx": "TR"}.get(info.access_srdo.value if info and info.access_srdo else "", "")
     multibyte = dtype.is_numeric and dtype.bits in (16, 32, 64)
     return _shared_attributes(sdo, pdo, srdo, multibyte, dtype.kind in (ValueKind.STRING, ValueKind.UNICODE))
@@ -260,6 +268,7 @@ class _Builder:
         where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
         if isinstance(value, NodeIdExpr):
             self.note(where, f"default {value.canonical()} stored as 0x{value.offset:X}: the stack adds the node-ID")
+        value = self.as_editor_reads(where, dtype, value)
         size = length if length is not None else _length(dtype, value, info.string_length_min if info else None)
         held = value_bytes(dtype, value, size)
         textual = dtype.kind in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS)
@@ -272,6 +281,25 @@ class _Builder:
         default = held if held is not None else bytes(size)
         default = self.defaults.setdefault(default, default)
         return NodeEntry(subindex, var.name, member, dtype, _attributes(dtype, var, info), size, stored, default)
+
+    def as_editor_reads(self, where: str, dtype: DataType, value: Value | None) -> Value | None:
+        """Defaults CiA 306 leaves unreadable but CANopenEditor reads (short hex octets, C float literals);
+        DOMAIN defaults ignored."""
+        if dtype.index == DOMAIN.index and value is not None:
+            self.note(where, "DOMAIN default ignored: no memory in the OD, the application streams the data "
+                             "(OD_extension_init), as in CANopenEditor")  # fmt: skip
+            return None
+        if dtype.kind is ValueKind.OCTETS and isinstance(value, RawValue):
+            octets = editor_octets(value.text)
+            if octets is not None:
+                self.note(where, f"default {value.text!r} read as the bytes {octets.hex(' ')}, as CANopenEditor does")
+                return octets
+        if dtype.kind is ValueKind.REAL and isinstance(value, RawValue):
+            real = editor_real(value.text)
+            if real is not None:
+                self.note(where, f"default {value.text!r} read as {real!r}, the C literal CANopenEditor copies")
+                return real
+        return value
 
     def settings(self, obj: Object) -> tuple[str, str | None]:
         info = obj.canopennode or CanopenNodeInfo()
@@ -299,6 +327,23 @@ class _Builder:
                 length = max(lengths, default=0)
             entries = tuple(self.entry(obj, n, v, members[n], length if n > 0 else None) for n, v in subs if n >= 0)
         return NodeObject(obj.index, obj.name, c_name(obj.name) or "object", kind, group, label, entries)
+
+
+def keep_editor_pdo_bits(device: Device) -> list[str]:
+    """Give every entry CANopenEditor's ODA_*PDO bits (`pdo_attributes = "canopeneditor"`); lines for --explain."""
+    lines = []
+    for obj in generated_objects(device):
+        for subindex, var in sorted(obj.subs.items()) if obj.has_subs else [(0, obj)]:
+            ours, its = pdo_bits_pair(var)
+            if ours != its:
+                var.state_pdo_mapping(editor_pdo_word(var.stated_pdo_mapping, var.pdo_mapping))
+                where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
+                lines.append(f"{where}: {_bits(its)} as CANopenEditor writes it, not {_bits(ours)} (pdo_attributes)")
+    return lines
+
+
+def _bits(directions: str) -> str:
+    return f"ODA_{directions}PDO" if directions else "no PDO bit"
 
 
 def generated_objects(device: Device) -> list[Object]:

@@ -57,14 +57,48 @@ def test_refusals_write_nothing(tmp_path: Path) -> None:
     assert not (tmp_path / "out").exists()
 
 
-def test_a_project_can_ignore_a_profile_rule_for_a_stack_built_without_that_function(tmp_path: Path) -> None:
+def test_objects_of_switched_functions_follow_the_declared_stack_configuration(tmp_path: Path) -> None:
     source = demo_copy(tmp_path)
-    (tmp_path / "demoDevice.canopennode.toml").write_text("[1003]\ndisabled = true\n")
-    refused = gen(source, tmp_path / "out", cwd=tmp_path)
-    assert refused.returncode == 1 and "1001h counts as EM, so CANopen.c also uses 1003h [CNO005]" in refused.stderr
-    (tmp_path / "pyproject.toml").write_text('[tool.cantools-od]\nignore = ["CNO005"]\n')
-    assert gen(source, tmp_path / "out", cwd=tmp_path).returncode == 0
+    settings = tmp_path / "demoDevice.canopennode.toml"
+    settings.write_text("[1003]\ndisabled = true\n[1016]\ndisabled = true\n")
+    # Nothing declared: the stack's defaults would need 1003h and 1016h; warnings name the switches, and it generates.
+    unknown = gen(source, tmp_path / "out", cwd=tmp_path)
+    assert unknown.returncode == 0, unknown.stderr
+    assert "warning: 1001h counts as EM, so CANopen.c also uses 1003h when built with CO_CONFIG_EM & " \
+        "CO_CONFIG_EM_HISTORY" in unknown.stderr
+    assert "OD_CNT_HB_CONS when built with CO_CONFIG_HB_CONS & CO_CONFIG_HB_CONS_ENABLE" in unknown.stderr
     assert "#define OD_ENTRY_H1003 " not in (tmp_path / "out" / "OD.h").read_text()
+    # The project's own CO_driver_target.h turns both functions off: nothing to say.
+    target = tmp_path / "CO_driver_target.h"
+    target.write_text("#define CO_CONFIG_EM (CO_CONFIG_EM_PRODUCER | \\\n    CO_CONFIG_GLOBAL_FLAG_TIMERNEXT)\n"
+                      "#define CO_CONFIG_HB_CONS 0\n")  # fmt: skip
+    off = gen(source, tmp_path / "off", "--stack-config", str(target), "--depfile", str(tmp_path / "od.d"))
+    assert off.returncode == 0 and "CNO005" not in off.stderr, off.stderr
+    assert str(target) in (tmp_path / "od.d").read_text()
+    # A [stack] table that keeps the history on makes the missing 1003h an error: the stack would not start.
+    settings.write_text(settings.read_text() + '[stack]\nCO_CONFIG_EM = "CO_CONFIG_EM_PRODUCER | CO_CONFIG_EM_HISTORY"\n')
+    refused = gen(source, tmp_path / "on", "--stack-config", str(target))
+    assert refused.returncode == 1 and "error: 1001h counts as EM, so CANopen.c also uses 1003h" in refused.stderr
+    assert "CO_CONFIG_EM & CO_CONFIG_EM_HISTORY" in refused.stderr and "CNO005" in refused.stderr
+    assert "HB_CONS" not in refused.stderr and not (tmp_path / "on").exists()
+    # [tool.cantools-od] ignore still applies.
+    (tmp_path / "pyproject.toml").write_text('[tool.cantools-od]\nignore = ["CNO005"]\n')
+    assert gen(source, tmp_path / "on", "--stack-config", str(target), cwd=tmp_path).returncode == 0
+
+
+def test_unreadable_stack_configuration_is_a_usage_error(tmp_path: Path) -> None:
+    source = demo_copy(tmp_path)
+    target = tmp_path / "CO_driver_target.h"
+    target.write_text("#define CO_CONFIG_HB_CONS (CO_CONFIG_HB_CONS_ENABLE |)\n")
+    bad = gen(source, tmp_path / "out", "--stack-config", str(target))
+    assert bad.returncode == 2 and "CO_CONFIG_HB_CONS" in bad.stderr and not (tmp_path / "out").exists()
+    missing = gen(source, tmp_path / "out", "--stack-config", str(tmp_path / "absent.h"))
+    assert missing.returncode == 2 and "absent.h" in missing.stderr
+    (tmp_path / "demoDevice.canopennode.toml").write_text("[stack]\nCO_CONFIG_HB_CONS = true\n")
+    assert gen(source, tmp_path / "out").returncode == 2
+    (tmp_path / "demoDevice.canopennode.toml").write_text('[stack]\npdo_attributes = "lely"\n')
+    wrong = gen(source, tmp_path / "out")
+    assert wrong.returncode == 2 and "pdo_attributes" in wrong.stderr
 
 
 def test_one_name_for_the_c_and_canopennode_targets_is_refused(tmp_path: Path) -> None:

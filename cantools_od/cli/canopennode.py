@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from ..model import Device, Severity
+from ..model import Device, RawValue, Severity
 from ..model.canopennode import StackConfig
 from .common import EXIT_FINDINGS, EXIT_USAGE
 
@@ -75,3 +75,21 @@ def prepare_canopennode(device: Device, file: str, explain: bool, stack_files: t
         for inference in build_node_view(device, explain=True).inferences:
             click.echo(f"{file}: inferred: {inference.format()}", err=True)
     return [str(path)] if path is not None else []
+
+
+def keep_editor_readable(device: Device, damaged: set[int]) -> None:
+    """For the canopennode target alone: objects whose only errors are defaults CANopenEditor reads (a DOMAIN's,
+    `0` as an OCTET_STRING, `1.5f` as a REAL) are not damaged, and those errors are not reported: the view reads
+    them as CANopenEditor does, and --explain says how."""
+    from ..eds.where import damaged_objects
+    from ..model.canopennode import editor_reads
+
+    for index, diagnostics in damaged_objects(device).items():
+        obj = device.objects.get(index)
+        if obj is None or index not in damaged or any(d.code != "EDS030" for d in diagnostics):
+            continue
+        entries = obj.subs.values() if obj.has_subs else [obj]
+        raw = [(var.default, device.entry_type(var, obj)) for var in entries if isinstance(var.default, RawValue)]
+        if raw and all(isinstance(v, RawValue) and t is not None and editor_reads(t, v.text) for v, t in raw):
+            damaged.discard(index)
+            device.diagnostics = [d for d in device.diagnostics if not any(d is e for e in diagnostics)]

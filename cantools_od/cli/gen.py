@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 import click
 
 from ..model import Device, Severity
-from .canopennode import stack_config_option
+from .canopennode import keep_editor_readable, stack_config_option
 from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
@@ -95,6 +95,8 @@ def command(
         click.echo(f"{file}: error: nothing generated: the file could not be read", err=True)
         sys.exit(EXIT_FINDINGS)
     damaged = set(damaged_objects(device))
+    if stack_only:
+        keep_editor_readable(device, damaged)
     device._original = None  # the file's bytes, which only the search for damage needs: gen writes no EDS
     identifiers = identifiers_for(device, file, pin_file)
     extra_inputs = prepare_canopennode(device, file, explain, stack_files) if "canopennode" in targets else []

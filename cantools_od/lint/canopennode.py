@@ -25,8 +25,7 @@ from ..model.canopennode import (
     StackConfig,
     StackSwitch,
     count_label_for,
-    editor_octets,
-    editor_real,
+    editor_reads,
     pdo_bits_pair,
     sdo_directions,
     standard_storage_group,
@@ -49,7 +48,7 @@ def _objects(ctx: Context) -> Iterator[Object]:
     """The objects that go into the generated OD, when the profile is on."""
     if ctx.options.profile != PROFILE:
         return
-    for obj in ctx.device.objects.values():
+    for _, obj in sorted(ctx.device.objects.items()):
         if obj.kind in _SUPPORTED and not (obj.canopennode is not None and obj.canopennode.disabled):
             yield obj
 
@@ -335,13 +334,7 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
 
 
 def _editor_readable(dtype: DataType | None, value: RawValue) -> bool:
-    """Defaults the generator takes as CANopenEditor does: any DOMAIN default (ignored), short hex octets, C
-    float literals."""
-    if dtype is None:
-        return False
-    if dtype.kind is ValueKind.REAL:
-        return editor_real(value.text) is not None
-    return dtype.index == DOMAIN.index or (dtype.kind is ValueKind.OCTETS and editor_octets(value.text) is not None)
+    return dtype is not None and editor_reads(dtype, value.text)
 
 
 @rule(

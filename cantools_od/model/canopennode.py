@@ -52,6 +52,7 @@ from .cia301.objects import (
     TPDO_COMM,
     TX,
 )
+from .datatypes import DOMAIN, DataType, ValueKind
 
 if TYPE_CHECKING:
     from .objects import Variable
@@ -329,3 +330,13 @@ def editor_real(text: str) -> float | None:
     """A REAL default written as a C float literal ("0.0f"), which CANopenEditor copies into OD.c as it is."""
     stripped = text.strip()
     return float(stripped[:-1]) if _C_FLOAT.fullmatch(stripped) else None
+
+
+def editor_reads(dtype: DataType, text: str) -> bool:
+    """Whether CANopenEditor takes a default that CiA 306 cannot read: any DOMAIN default (it ignores them),
+    short hex octets of an OCTET_STRING (`0`, `1 2 A`), a C float literal of a REAL (`0.0f`)."""
+    if dtype.index == DOMAIN.index:
+        return True
+    if dtype.kind is ValueKind.OCTETS:
+        return editor_octets(text) is not None
+    return dtype.kind is ValueKind.REAL and editor_real(text) is not None

@@ -107,9 +107,13 @@ class Variable(Section):
 
     @property
     def stated_pdo_mapping(self) -> str | None:
-        """The PDOmapping word the file stated (an XDD); None where it said only 'mappable' or not (an EDS)."""
+        """The PDOmapping word the file stated (an XDD); None where it said only 'mappable' or not (an EDS), or
+        where `pdo_mapping` was edited to disagree with it."""
         private = self.__pydantic_private__
-        return private.get("_pdo_stated") if private is not None else None
+        stated = private.get("_pdo_stated") if private is not None else None
+        if stated is None or self.pdo_mapping is None or (stated != "no") != self.pdo_mapping:
+            return None  # not stated, or `pdo_mapping` was changed since: the word no longer holds
+        return str(stated)
 
     @property
     def dtype(self) -> DataType | None:

@@ -40,6 +40,7 @@ from ..model import (
     CanopenNodeInfo,
     DataType,
     Device,
+    Dialect,
     NodeIdExpr,
     Object,
     ObjectKind,
@@ -50,6 +51,7 @@ from ..model import (
     Variable,
 )
 from ..model.canopennode import (
+    RAM,
     count_label_for,
     editor_octets,
     editor_pdo_word,
@@ -155,10 +157,12 @@ class NodeView:
 
 
 def c_name(name: str) -> str:
-    """CANopenEditor's spelling of a display name: camelCase words, '-' as '_', '_' between capitals.
+    """CANopenEditor's spelling of a display name (v4.1 and later): camelCase words, '-' as '_', '_'
+    between capitals, '_' before a leading digit.
 
     "COB-ID SYNC message" → COB_ID_SYNCMessage, "Highest sub-index supported" →
-    highestSub_indexSupported, "Variable NV Int32" → variableNV_Int32. Application code written
+    highestSub_indexSupported, "Variable NV Int32" → variableNV_Int32, "Trigger input x8" →
+    triggerInputX8. Application code written
     against CANopenEditor's OD.h (OD_PERSIST_COMM.x1018_identity.vendor_ID) keeps compiling.
     """
     folded = unicodedata.normalize("NFKD", name).encode("ascii", "ignore").decode("ascii")
@@ -166,12 +170,16 @@ def c_name(name: str) -> str:
     for word in _WORD.findall(folded.replace("-", "_")):
         if last.isupper() and word[0].isupper():
             out += "_"
-        if len(word) > 1 and word[1].islower():
+        last = word[-1]
+        if len(word) > 1 and word[0].isalpha():
             word = word[0].upper() + word[1:]
         out += word
-        last = word[-1]
-    if len(out) > 1 and out[1].islower():
+    if out[:1].isdigit():
+        out = "_" + out
+    elif len(out) > 1 and out[0].isalpha() and out[1].islower():
         out = out[0].lower() + out[1:]
+    elif len(out) == 1:
+        out = out.lower()
     return sys.intern(out)  # members repeat from object to object (sub1, highestSub_indexSupported)
 
 
@@ -254,6 +262,8 @@ class _Builder:
         self.explain = explain
         self.inferences: list[Inference] = []
         self.defaults: dict[bytes, bytes] = {}  # equal initial values, mostly zeros, held once
+        # A CANopenEditor project (its CO_* properties, ;StorageLocation=) omits the storage group where it is RAM.
+        self.editor_project = device.dialect is Dialect.CANOPENNODE
 
     def note(self, where: str, text: str) -> None:
         # Only --explain reads them; a note per object would be a large part of a large file's view.
@@ -305,7 +315,10 @@ class _Builder:
         info = obj.canopennode or CanopenNodeInfo()
         where = f"{obj.index:04X}h"
         group = info.storage_group
-        if not group:
+        if not group and self.editor_project:
+            group = RAM
+            self.note(where, f"storage group {group}: a CANopenEditor project leaves it unsaid where it is RAM")
+        elif not group:
             group = standard_storage_group(obj.index)
             self.note(where, f"storage group {group} inferred from the index")
         label = count_label_for(obj.index, obj.canopennode)
@@ -348,9 +361,9 @@ def _bits(directions: str) -> str:
 
 def generated_objects(device: Device) -> list[Object]:
     """The objects that go into the OD: VAR, DOMAIN, ARRAY and RECORD objects not disabled."""
-    return [
+    return [  # by index, whatever the file's order: OD_find searches the list by bisection
         obj
-        for obj in device.objects.values()
+        for _, obj in sorted(device.objects.items())
         if obj.kind in _KINDS and not (obj.canopennode is not None and obj.canopennode.disabled)
     ]
 

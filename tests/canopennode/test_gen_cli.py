@@ -64,8 +64,10 @@ def test_objects_of_switched_functions_follow_the_declared_stack_configuration(t
     # Nothing declared: the stack's defaults would need 1003h and 1016h; warnings name the switches, and it generates.
     unknown = gen(source, tmp_path / "out", cwd=tmp_path)
     assert unknown.returncode == 0, unknown.stderr
-    assert "warning: 1001h counts as EM, so CANopen.c also uses 1003h when built with CO_CONFIG_EM & " \
+    assert (
+        "warning: 1001h counts as EM, so CANopen.c also uses 1003h when built with CO_CONFIG_EM & "
         "CO_CONFIG_EM_HISTORY" in unknown.stderr
+    )
     assert "OD_CNT_HB_CONS when built with CO_CONFIG_HB_CONS & CO_CONFIG_HB_CONS_ENABLE" in unknown.stderr
     assert "#define OD_ENTRY_H1003 " not in (tmp_path / "out" / "OD.h").read_text()
     # The project's own CO_driver_target.h turns both functions off: nothing to say.
@@ -76,7 +78,9 @@ def test_objects_of_switched_functions_follow_the_declared_stack_configuration(t
     assert off.returncode == 0 and "CNO005" not in off.stderr, off.stderr
     assert str(target) in (tmp_path / "od.d").read_text()
     # A [stack] table that keeps the history on makes the missing 1003h an error: the stack would not start.
-    settings.write_text(settings.read_text() + '[stack]\nCO_CONFIG_EM = "CO_CONFIG_EM_PRODUCER | CO_CONFIG_EM_HISTORY"\n')
+    settings.write_text(
+        settings.read_text() + '[stack]\nCO_CONFIG_EM = "CO_CONFIG_EM_PRODUCER | CO_CONFIG_EM_HISTORY"\n'
+    )
     refused = gen(source, tmp_path / "on", "--stack-config", str(target))
     assert refused.returncode == 1 and "error: 1001h counts as EM, so CANopen.c also uses 1003h" in refused.stderr
     assert "CO_CONFIG_EM & CO_CONFIG_EM_HISTORY" in refused.stderr and "CNO005" in refused.stderr

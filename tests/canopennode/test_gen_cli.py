@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import re
 import shutil
+import subprocess
 from pathlib import Path
 
 from cnokit import DEMO, WARNINGS, gen, includes, run, stack
+
+from support import cli_command
 
 
 def demo_copy(tmp_path: Path) -> Path:
@@ -112,3 +116,28 @@ def test_one_name_for_the_c_and_canopennode_targets_is_refused(tmp_path: Path) -
     assert not (tmp_path / "out").exists()
     assert gen(source, tmp_path / "out", "-t", "c").returncode == 0  # default names differ: OD.* and demo_device.*
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["OD.c", "OD.h", "demo_device.c", "demo_device.h"]
+
+
+def test_lint_profile_follows_the_declared_stack_configuration(tmp_path: Path) -> None:
+    stack()
+    text = (DEMO / "demoDevice.eds").read_text(encoding="utf-8")
+    # The same device without its heartbeat consumer (1016h and its two sub-objects).
+    kept = [s for s in re.split(r"(?m)^(?=\[)", text) if not s.startswith(("[1016]", "[1016sub"))]
+    source = tmp_path / "device.eds"
+    source.write_text("".join(kept), encoding="utf-8")
+    before = source.read_bytes()
+
+    def lint(*args: str) -> subprocess.CompletedProcess[str]:
+        command = [*cli_command(), "lint", "--profile", "canopennode", "--select", "CNO005", str(source), *args]
+        return subprocess.run(command, capture_output=True, text=True)
+
+    unknown = lint()
+    assert unknown.returncode == 0 and "warning" in unknown.stdout and "CO_CONFIG_HB_CONS_ENABLE" in unknown.stdout
+    (tmp_path / "on.h").write_text("#define CO_CONFIG_HB_CONS CO_CONFIG_HB_CONS_ENABLE\n")
+    needed = lint("--stack-config", str(tmp_path / "on.h"))
+    assert needed.returncode == 1 and "error: no object counts as HB_CONS" in needed.stdout
+    (tmp_path / "off.h").write_text("#define CO_CONFIG_HB_CONS (0)\n")
+    assert "HB_CONS" not in lint("--stack-config", str(tmp_path / "off.h")).stdout
+    (tmp_path / "device.canopennode.toml").write_text("[stack]\nCO_CONFIG_HB_CONS = 0\n")
+    assert "HB_CONS" not in lint("--stack-config", str(tmp_path / "on.h")).stdout  # the table wins
+    assert source.read_bytes() == before

@@ -82,14 +82,16 @@ def keep_editor_readable(device: Device, damaged: set[int]) -> None:
     `0` as an OCTET_STRING, `1.5f` as a REAL) are not damaged, and those errors are not reported: the view reads
     them as CANopenEditor does, and --explain says how."""
     from ..eds.where import damaged_objects
-    from ..model.canopennode import editor_reads
+    from ..model.canopennode import editor_entry_type, editor_reads
 
     for index, diagnostics in damaged_objects(device).items():
         obj = device.objects.get(index)
         if obj is None or index not in damaged or any(d.code != "EDS030" for d in diagnostics):
             continue
         entries = obj.subs.values() if obj.has_subs else [obj]
-        raw = [(var.default, device.entry_type(var, obj)) for var in entries if isinstance(var.default, RawValue)]
+        raw = [
+            (var.default, editor_entry_type(device, var, obj)) for var in entries if isinstance(var.default, RawValue)
+        ]
         if raw and all(isinstance(v, RawValue) and t is not None and editor_reads(t, v.text) for v, t in raw):
             damaged.discard(index)
             device.diagnostics = [d for d in device.diagnostics if not any(d is e for e in diagnostics)]

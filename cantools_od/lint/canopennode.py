@@ -25,6 +25,7 @@ from ..model.canopennode import (
     StackConfig,
     StackSwitch,
     count_label_for,
+    editor_entry_type,
     editor_reads,
     pdo_bits_pair,
     sdo_directions,
@@ -73,7 +74,7 @@ it holds; there is no automatic fix.""",
 def unsupported_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         for subindex, var in _entries(obj):
-            dtype = ctx.device.entry_type(var, obj)
+            dtype = editor_entry_type(ctx.device, var, obj)
             if dtype is None or dtype.kind is ValueKind.COMPLEX:
                 what = f"DataType {var.data_type:#06x}" if var.data_type else "no DataType"
                 what = f"type {dtype.name}" if dtype else what
@@ -322,7 +323,7 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         for subindex, var in _entries(obj):
             value = var.parameter_value if var.parameter_value is not None else var.default
-            dtype = ctx.device.entry_type(var, obj)
+            dtype = editor_entry_type(ctx.device, var, obj)
             bad = isinstance(value, RawValue) and not _editor_readable(dtype, value)
             if dtype is not None and dtype.index == REAL32.index and isinstance(value, (int, float)):
                 bad = math.isfinite(value) and abs(value) > 3.4028234663852886e38
@@ -380,7 +381,7 @@ CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS ca
 def string_without_memory(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         for subindex, var in _entries(obj):
-            dtype = ctx.device.entry_type(var, obj)
+            dtype = editor_entry_type(ctx.device, var, obj)
             if dtype is None or dtype.kind not in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS):
                 continue
             if dtype.index == DOMAIN.index or var.access is None or not var.access.writable:

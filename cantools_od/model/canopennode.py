@@ -55,7 +55,8 @@ from .cia301.objects import (
 from .datatypes import DOMAIN, DataType, ValueKind
 
 if TYPE_CHECKING:
-    from .objects import Variable
+    from .device import Device
+    from .objects import Object, Variable
 
 
 class SrdoAccess(StrEnum):
@@ -332,11 +333,34 @@ def editor_real(text: str) -> float | None:
     return float(stripped[:-1]) if _C_FLOAT.fullmatch(stripped) else None
 
 
+def editor_integer(text: str) -> int | None:
+    """An integer as CANopenEditor reads it where the file's own type did not say how (an ARRAY element with
+    DataType 0, whose ARRAY gives the type): 0x hex (U and L dropped), a leading 0 octal, else decimal."""
+    stripped = text.strip()
+    if re.fullmatch(r"0[xX][0-9A-Fa-f]+[uUlL]*", stripped):
+        return int(stripped.rstrip("uUlL"), 16)
+    if re.fullmatch(r"0[0-7]+", stripped):
+        return int(stripped, 8)
+    return int(stripped) if re.fullmatch(r"-?\d+", stripped) else None
+
+
 def editor_reads(dtype: DataType, text: str) -> bool:
     """Whether CANopenEditor takes a default that CiA 306 cannot read: any DOMAIN default (it ignores them),
-    short hex octets of an OCTET_STRING (`0`, `1 2 A`), a C float literal of a REAL (`0.0f`)."""
+    short hex octets of an OCTET_STRING (`0`, `1 2 A`), a C float literal of a REAL (`0.0f`), an integer of an
+    entry typed only by its ARRAY."""
     if dtype.index == DOMAIN.index:
         return True
     if dtype.kind is ValueKind.OCTETS:
         return editor_octets(text) is not None
+    if dtype.kind in (ValueKind.UNSIGNED, ValueKind.SIGNED):
+        return editor_integer(text) is not None
     return dtype.kind is ValueKind.REAL and editor_real(text) is not None
+
+
+def editor_entry_type(device: Device, var: Variable, obj: Object) -> DataType | None:
+    """The entry's type as CANopenEditor takes it: its own, else, for an ARRAY element whose DataType is 0 or
+    missing, the ARRAY's (old CANopenEditor projects write `dataType="0000"` on the elements)."""
+    dtype = device.entry_type(var, obj)
+    if dtype is None and var is not obj and obj.kind == 0x8 and not var.data_type:
+        return obj.dtype
+    return dtype

@@ -53,6 +53,8 @@ from ..model import (
 from ..model.canopennode import (
     RAM,
     count_label_for,
+    editor_entry_type,
+    editor_integer,
     editor_octets,
     editor_pdo_word,
     editor_real,
@@ -271,7 +273,7 @@ class _Builder:
             self.inferences.append(Inference(where, text))
 
     def entry(self, obj: Object, subindex: int, var: Variable, member: str, length: int | None = None) -> NodeEntry:
-        dtype = self.device.entry_type(var, obj)
+        dtype = editor_entry_type(self.device, var, obj)
         assert dtype is not None, "the canopennode profile refuses entries without a type"
         info = var.canopennode
         value = var.parameter_value if var.parameter_value is not None else var.default
@@ -304,6 +306,11 @@ class _Builder:
             if octets is not None:
                 self.note(where, f"default {value.text!r} read as the bytes {octets.hex(' ')}, as CANopenEditor does")
                 return octets
+        if dtype.kind in (ValueKind.UNSIGNED, ValueKind.SIGNED) and isinstance(value, RawValue):
+            number = editor_integer(value.text)
+            if number is not None:
+                self.note(where, f"default {value.text!r} read as {number} of the ARRAY's type, as CANopenEditor does")
+                return number
         if dtype.kind is ValueKind.REAL and isinstance(value, RawValue):
             real = editor_real(value.text)
             if real is not None:

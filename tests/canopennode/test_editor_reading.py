@@ -159,3 +159,27 @@ def test_names_and_storage_groups_of_a_canopeneditor_project(tmp_path: Path) -> 
     ours = walk(tmp_path / "project", tmp_path / "w2")
     assert ours[0x1014].subs[0].group == "RAM" and ours[0x2001].subs[0].group == "PERSIST_APP"
     assert "1014h: storage group RAM: a CANopenEditor project leaves it unsaid where it is RAM" in project.stderr
+
+
+def test_array_elements_typed_only_by_their_array(tmp_path: Path) -> None:
+    """Older CANopenEditor projects write dataType="0000" on ARRAY elements; it takes the ARRAY's type."""
+    stack()
+    from xddkit import MANDATORY
+
+    elements = "".join(
+        f'\n            <CANopenSubObject subIndex="{n:02X}" name="Field" objectType="7" dataType="0000" '
+        f'accessType="rw" defaultValue="{text}" PDOmapping="no" />'
+        for n, text in ((1, "0"), (2, "0x10"), (3, "010"))
+    )
+    array = (
+        '\n          <CANopenObject index="2200" name="Fields" objectType="8" dataType="0007" subNumber="4">'
+        '\n            <CANopenSubObject subIndex="00" name="Count" objectType="7" dataType="0005" accessType="ro" '
+        'defaultValue="3" PDOmapping="no" />' + elements + "\n          </CANopenObject>"
+    )
+    (tmp_path / "old.xdd").write_text(document(MANDATORY + HEARTBEAT_XDD + array), encoding="utf-8")
+    result = gen(tmp_path / "old.xdd", tmp_path / "od")
+    assert result.returncode == 0, result.stderr
+    seen = walk(tmp_path / "od", tmp_path / "walk")[0x2200]
+    assert [(seen.subs[n].length, seen.subs[n].data) for n in (1, 2, 3)] == [
+        (4, bytes(4)), (4, b"\x10\0\0\0"), (4, b"\x08\0\0\0")
+    ]  # fmt: skip

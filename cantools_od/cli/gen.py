@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 import click
 
 from ..model import Device, Severity
+from .canopennode import keep_editor_readable, stack_config_option
 from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
@@ -53,6 +54,7 @@ def default_name(file: str) -> str:
     "--keep-going", is_flag=True,
     help="Generate what errors in FILE do not touch, list what is left out, and exit 0.",
 )  # fmt: skip
+@stack_config_option
 @node_id_option
 @pins_option
 def command(
@@ -66,6 +68,7 @@ def command(
     keep_going: bool,
     node_id: int | None,
     pin_file: str | None,
+    stack_files: tuple[str, ...],
 ) -> None:
     """Generate code and documents for FILE into OUTDIR. Files are rewritten only when
     their content changes, and all of them or none.
@@ -94,9 +97,11 @@ def command(
         click.echo(f"{file}: error: nothing generated: the file could not be read", err=True)
         sys.exit(EXIT_FINDINGS)
     damaged = set(damaged_objects(device))
+    if stack_only:
+        keep_editor_readable(device, damaged)
     device._original = None  # the file's bytes, which only the search for damage needs: gen writes no EDS
     identifiers = identifiers_for(device, file, pin_file)
-    extra_inputs = prepare_canopennode(device, file, explain) if "canopennode" in targets else []
+    extra_inputs = prepare_canopennode(device, file, explain, stack_files) if "canopennode" in targets else []
     report(device.diagnostics, minimum=Severity.ERROR)
     # PDO code needs the PDOs to be packable; the stack checks PDOs itself.
     view, left_out = _view(device, damaged, base, node_id, identifiers, frame_bits(can_fd), not stack_only)
@@ -113,7 +118,7 @@ def command(
         files = itertools.chain(files, [(Path(outdir) / f"{base}.dbc", [_dbc(device, file, node_id, base)])])
     if depfile:
         pins = pin_file_for(file, pin_file)
-        files = _with_depfile(files, Path(depfile), [file, *([str(pins)] if pins else []), *extra_inputs])
+        files = _with_depfile(files, Path(depfile), [file, *([str(pins)] if pins else []), *extra_inputs, *stack_files])
     # Each file is rendered as it is written; a failure anywhere leaves every output as it was.
     write_outputs(files)
     sys.exit(EXIT_OK)

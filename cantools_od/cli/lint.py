@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import sys
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
+from .canopennode import load_stack_config, stack_config_option
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device, write_outputs
 
 if TYPE_CHECKING:
@@ -37,6 +39,7 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 @click.option(
     "--profile", type=click.Choice(["canopennode"]), help="Also apply a target's rules (canopennode: the CNO codes)."
 )
+@stack_config_option
 def command(
     files: tuple[str, ...],
     fmt: str,
@@ -48,6 +51,7 @@ def command(
     network: bool,
     defines: tuple[str, ...],
     profile: str | None,
+    stack_files: tuple[str, ...],
 ) -> None:
     """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
     from ..api import dumps, format_for
@@ -77,6 +81,8 @@ def command(
         findings.extend(_bus_findings(bus, defines, selection))
     for name in (name for name in files if name not in buses):
         device = read_device(name, node_id)
+        if profile == "canopennode":  # the configuration each project declares beside its file
+            options = replace(options, stack=load_stack_config(name, stack_files))
         result = lint(device, options, selection)
         if fix and any(f.fix is not None and f.fix.safe for f in result):
             for finding in result:

@@ -13,14 +13,22 @@ import math
 import re
 from collections.abc import Iterator
 
-from ..model import Device, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
+from ..model import DataType, Device, Location, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
 from ..model.canopennode import (
     COMPANIONS,
     CONSECUTIVE,
     COUNT_LIMITS,
     NODEID_AREAS,
     REQUIRED_COUNTS,
+    SWITCHED_COMPANIONS,
+    SWITCHED_COUNTS,
+    StackConfig,
+    StackSwitch,
     count_label_for,
+    editor_entry_type,
+    editor_reads,
+    pdo_bits_pair,
+    sdo_directions,
     standard_storage_group,
 )
 from ..model.datatypes import DOMAIN, INDEX_BY_NAME, REAL32, UNSIGNED8
@@ -41,7 +49,7 @@ def _objects(ctx: Context) -> Iterator[Object]:
     """The objects that go into the generated OD, when the profile is on."""
     if ctx.options.profile != PROFILE:
         return
-    for obj in ctx.device.objects.values():
+    for _, obj in sorted(ctx.device.objects.items()):
         if obj.kind in _SUPPORTED and not (obj.canopennode is not None and obj.canopennode.disabled):
             yield obj
 
@@ -66,7 +74,7 @@ it holds; there is no automatic fix.""",
 def unsupported_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         for subindex, var in _entries(obj):
-            dtype = ctx.device.entry_type(var, obj)
+            dtype = editor_entry_type(ctx.device, var, obj)
             if dtype is None or dtype.kind is ValueKind.COMPLEX:
                 what = f"DataType {var.data_type:#06x}" if var.data_type else "no DataType"
                 what = f"type {dtype.name}" if dtype else what
@@ -100,9 +108,10 @@ def sub0_type(ctx: Context) -> Iterator[Finding]:
     "ARRAY elements differ in type or attribute",
     """
 A CANopenNode ARRAY is one C array: one element type, one element size and one attribute
-(`OD_obj_array_t.attribute`) for sub-indices 1 to n. Elements with another DataType, AccessType
-or PDOMapping than sub-index 1 cannot be represented; the exporter would silently use
-sub-index 1's. Fix: make the elements alike, or declare the object as a RECORD.""",
+(`OD_obj_array_t.attribute`) for sub-indices 1 to n. Elements with another DataType than
+sub-index 1, or an AccessType or PDOMapping that gives other ODA_* bits (`ro` and `const` give
+the same), cannot be represented; the exporter would silently use sub-index 1's. Fix: make the
+elements alike, or declare the object as a RECORD.""",
     _ARRAY.replace("AccessType=rw", "AccessType=ro", 2).replace("AccessType=ro", "AccessType=rw", 2),
     fixed=_ARRAY,
 )
@@ -114,11 +123,18 @@ def array_elements(ctx: Context) -> Iterator[Finding]:
         for subindex, sub in sorted(obj.subs.items()):
             if subindex < 2:
                 continue
-            for key, field in (("DataType", "data_type"), ("AccessType", "access"), ("PDOMapping", "pdo_mapping")):
-                if getattr(sub, field) != getattr(first, field):
-                    message = f"{obj.index:04X}h sub{subindex:X}: {key} differs from sub1's; an ARRAY has one"
-                    yield ctx.report("CNO003", message, ctx.at(ctx.section_of(obj, sub), key))
-                    break
+            key = "DataType" if sub.data_type != first.data_type else None
+            if key is None and _sdo(sub) != _sdo(first):
+                key = "AccessType"
+            elif key is None and pdo_bits_pair(sub)[0] != pdo_bits_pair(first)[0]:
+                key = "PDOMapping"
+            if key is not None:
+                message = f"{obj.index:04X}h sub{subindex:X}: {key} differs from sub1's; an ARRAY has one"
+                yield ctx.report("CNO003", message, ctx.at(ctx.section_of(obj, sub), key))
+
+
+def _sdo(var: Variable) -> str:
+    return sdo_directions(var.access.value if var.access else None)
 
 
 @rule(
@@ -155,16 +171,18 @@ def array_shape(ctx: Context) -> Iterator[Finding]:
     E,
     "Object the stack requires is missing",
     """
-CANopen.c stops the build with `#error` unless OD_CNT_NMT, OD_CNT_EM and OD_CNT_HB_PROD are 1,
-and (with the emergency producer, on by default) OD_CNT_EM_PROD is 1: the device needs 1000h
-(device type, NMT), 1001h (error register, EM), 1014h (COB-ID EMCY, EM_PROD) and 1017h
-(producer heartbeat time, HB_PROD); with the heartbeat consumer (on by default) CANopen.c sizes
-its tables by OD_CNT_ARR_1016 even when it is 0, so 1016h (HB_CONS) must be there too. The
-emergency history (on by default) needs 1003h, SYNC also reads 1006h (communication cycle
-period), SRDO 13FEh and 13FFh, without a fallback. These follow the stack's default CO_CONFIG_*;
-a build that turns a function off can ignore the code in `[tool.cantools-od]`. Fix: add the
-object; the count label follows from its index (or set `count_label` in the .canopennode.toml
-file).""",
+CANopen.c stops the build with `#error` unless OD_CNT_NMT, OD_CNT_EM and OD_CNT_HB_PROD are 1:
+every device needs 1000h (device type, NMT), 1001h (error register, EM) and 1017h (producer
+heartbeat time, HB_PROD). Other objects are needed only when a function of the stack is built in
+(301/CO_config.h): 1014h (COB-ID EMCY) with `CO_CONFIG_EM_PRODUCER` in `CO_CONFIG_EM`, 1003h
+(error history) with `CO_CONFIG_EM_HISTORY`, 1016h (consumer heartbeat time, whose size
+CANopen.c takes from OD_CNT_ARR_1016) with `CO_CONFIG_HB_CONS_ENABLE`, 1006h (communication cycle
+period, read with 1005h) with `CO_CONFIG_SYNC_ENABLE`, 13FEh/13FFh with `CO_CONFIG_SRDO_ENABLE`.
+These are errors when the project declares its configuration (a `[stack]` table in the
+.canopennode.toml file, or `--stack-config` naming its `CO_driver_target.h`) and it turns the
+function on; warnings naming the switch when it declares none; nothing when it turns it off.
+Fix: add the object, or declare the configuration that leaves the function out; the count label
+follows from the index (or set `count_label` in the .canopennode.toml file).""",
     "; no [1017]\n[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
     fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n"
     + ex.var(0x1017, "Producer heartbeat time", 0x0006, mapping=0),
@@ -173,16 +191,35 @@ def required_counts(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
     if ctx.options.profile != PROFILE:
         return
+    stack = ctx.options.stack or StackConfig()
     for label, index in REQUIRED_COUNTS:
         if label not in counts:
             message = f"no object counts as {label} (usually {index:04X}h): CANopen.c needs OD_CNT_{label}"
-            yield ctx.report("CNO005", message, ctx.at(ctx.device.mandatory_objects or ctx.device.file_info))
+            where = ctx.at(ctx.device.mandatory_objects or ctx.device.file_info)
+            yield from _switched(ctx, stack, SWITCHED_COUNTS.get(label), message, where)
     present = {obj.index for obj in _objects(ctx)}
     for label, needed in COMPANIONS:
         for index in needed if label in counts else ():
             if index not in present:
                 message = f"{counts[label][0].index:04X}h counts as {label}, so CANopen.c also uses {index:04X}h"
-                yield ctx.report("CNO005", message, ctx.at(counts[label][0]))
+                yield from _switched(ctx, stack, SWITCHED_COMPANIONS.get(label), message, ctx.at(counts[label][0]))
+
+
+def _switched(
+    ctx: Context, stack: StackConfig, need: StackSwitch | None, message: str, where: Location
+) -> Iterator[Finding]:
+    """CNO005 as the declared configuration has it: an error when it needs the object, a warning when unknown."""
+    wanted = True if need is None else stack.needs(need)
+    if wanted:
+        declared = (
+            f" (the configuration declared in {', '.join(stack.sources)} has {need.spelled()})"
+            if (need and stack.sources)
+            else ""
+        )
+        yield ctx.report("CNO005", message + declared, where)
+    elif wanted is None and need is not None:
+        note = f" when built with {need.spelled()} (the stack's default); declare the configuration to decide"
+        yield Finding("CNO005", W, message + note, where)
 
 
 def _counts(ctx: Context) -> dict[str, list[Object]]:
@@ -201,10 +238,12 @@ def _counts(ctx: Context) -> dict[str, list[Object]]:
     """
 CANopen.c checks the OD_CNT_* counts with `#error` (NMT, EM, HB_PROD exactly 1; SYNC, TIME,
 HB_CONS, GFC at most 1; SDO servers 1-128, clients up to 128; RPDO and TPDO up to 512; SRDO up
-to 64) and needs 1016h to be an ARRAY of 1 to 127 heartbeat consumers. Its init loops also walk the OD list by
-position: SDO server i is 1200h+i, RPDO i is 1400h+i with mapping 1600h+i, TPDO i 1800h+i with
-1A00h+i, SRDO i 1301h+i with 1381h+i, so these must be consecutive and paired. Count labels and
-storage groups become C names, so they must be C identifiers. Fix: correct the objects or the
+to 64) and, with the heartbeat consumer built in (`CO_CONFIG_HB_CONS_ENABLE`; a warning when the
+project declares no configuration), needs 1016h to be an ARRAY of 1 to 127 heartbeat consumers.
+Its init loops also walk the OD list by position: SDO server i is 1200h+i, RPDO i is 1400h+i
+with mapping 1600h+i, TPDO i 1800h+i with 1A00h+i, SRDO i 1301h+i with 1381h+i, so these must be
+consecutive and paired. Count labels and storage groups become C names, so they must be C
+identifiers. Fix: correct the objects or the
 `count_label` setting.""",
     ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=3) + ex.CONTROLWORD + ex.TARGET_POSITION,
     fixed=ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=2) + ex.CONTROLWORD + ex.TARGET_POSITION,
@@ -221,17 +260,31 @@ def count_limits(ctx: Context) -> Iterator[Finding]:
             limit = f"exactly {least}" if least == most else f"{least} to {most}"
             yield ctx.report("CNO006", f"{len(objects)} objects count as {label}; the stack allows {limit}", where)
         yield from _consecutive(ctx, label, objects)
-    heartbeat = ctx.device.objects.get(0x1016)
-    if "HB_CONS" in counts and heartbeat is not None and heartbeat.kind is not ObjectKind.ARRAY:
-        yield ctx.report("CNO006", "1016h must be an ARRAY: the stack sizes its consumers by OD_CNT_ARR_1016",
-                         ctx.at(heartbeat))  # fmt: skip
-    elif "HB_CONS" in counts and heartbeat is not None and not 1 <= len(heartbeat.subs) - 1 <= 127:
-        yield ctx.report("CNO006", f"1016h has {len(heartbeat.subs) - 1} consumers; the stack allows 1 to 127",
-                         ctx.at(heartbeat))  # fmt: skip
+    yield from _heartbeat_consumers(ctx, counts)
     for obj in _objects(ctx):
         group = (obj.canopennode.storage_group if obj.canopennode else None) or standard_storage_group(obj.index)
         if not _C_IDENTIFIER.fullmatch(group):
             yield ctx.report("CNO006", f"{obj.index:04X}h: storage group {group!r} is not a C identifier", ctx.at(obj))
+
+
+def _heartbeat_consumers(ctx: Context, counts: dict[str, list[Object]]) -> Iterator[Finding]:
+    """1016h as the heartbeat consumer (when built in) needs it: an ARRAY of 1 to 127 entries."""
+    heartbeat = ctx.device.objects.get(0x1016)
+    if "HB_CONS" not in counts or heartbeat is None:
+        return
+    message = ""
+    if heartbeat.kind is not ObjectKind.ARRAY:
+        message = "1016h must be an ARRAY: the stack sizes its consumers by OD_CNT_ARR_1016"
+    elif not 1 <= len(heartbeat.subs) - 1 <= 127:
+        message = f"1016h has {len(heartbeat.subs) - 1} consumers; the stack allows 1 to 127"
+    if message:
+        need = SWITCHED_COUNTS["HB_CONS"]
+        wanted = (ctx.options.stack or StackConfig()).needs(need)
+        if wanted:
+            yield ctx.report("CNO006", message, ctx.at(heartbeat))
+        elif wanted is None:
+            yield Finding("CNO006", W, f"{message}, when built with {need.spelled()} (the stack's default)",
+                          ctx.at(heartbeat))  # fmt: skip
 
 
 def _consecutive(ctx: Context, label: str, objects: list[Object]) -> Iterator[Finding]:
@@ -258,8 +311,10 @@ def _consecutive(ctx: Context, label: str, objects: list[Object]) -> Iterator[Fi
     "Default value the stack cannot store",
     """
 The generator writes every default into C initializers. A DefaultValue that could not be read
-as the entry's type, or a REAL32 beyond the float range, has no C spelling. Fix: write the
-value in the entry's type.""",
+as the entry's type, or a REAL32 beyond the float range, has no C spelling. Read as CANopenEditor
+reads them, and so not reported: a DOMAIN's default (ignored: the application streams a DOMAIN's
+data), OCTET_STRING bytes of one or two hex digits between blanks (`0`, `1 2 A`) and REAL C
+literals (`0.0f`). Fix: write the value in the entry's type.""",
     "; also: EDS030 (the value is not a REAL32)\n"
     + "[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e40\nPDOMapping=0",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e30\nPDOMapping=0",
@@ -268,8 +323,8 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         for subindex, var in _entries(obj):
             value = var.parameter_value if var.parameter_value is not None else var.default
-            dtype = ctx.device.entry_type(var, obj)
-            bad = isinstance(value, RawValue)
+            dtype = editor_entry_type(ctx.device, var, obj)
+            bad = isinstance(value, RawValue) and not _editor_readable(dtype, value)
             if dtype is not None and dtype.index == REAL32.index and isinstance(value, (int, float)):
                 bad = math.isfinite(value) and abs(value) > 3.4028234663852886e38
             if bad:
@@ -277,6 +332,10 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
                 shown = value.text if isinstance(value, RawValue) else value
                 yield ctx.report("CNO007", f"{where}: default {shown!r} cannot be stored as its type",
                                  ctx.at(ctx.section_of(obj, var), "DefaultValue"))  # fmt: skip
+
+
+def _editor_readable(dtype: DataType | None, value: RawValue) -> bool:
+    return dtype is not None and editor_reads(dtype, value.text)
 
 
 @rule(
@@ -322,7 +381,7 @@ CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS ca
 def string_without_memory(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         for subindex, var in _entries(obj):
-            dtype = ctx.device.entry_type(var, obj)
+            dtype = editor_entry_type(ctx.device, var, obj)
             if dtype is None or dtype.kind not in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS):
                 continue
             if dtype.index == DOMAIN.index or var.access is None or not var.access.writable:
@@ -335,10 +394,41 @@ def string_without_memory(ctx: Context) -> Iterator[Finding]:
                 yield ctx.report("CNO009", message, ctx.at(ctx.section_of(obj, var), "DefaultValue"))
 
 
-def profile_findings(device: Device, node_id: int | None = None, ignore: tuple[str, ...] = ()) -> list[Finding]:
+@rule(
+    "CNO010",
+    Severity.INFO,
+    "PDO attribute differs from CANopenEditor's on purpose",
+    """
+An EDS says only whether an entry may be mapped (PDOMapping=1), not into which PDOs. CANopenEditor
+reads PDOMapping=1 as CiA 311's `optional` and gives the entry ODA_TRPDO whatever its access, so
+an RPDO could write a read-only entry. CiA 301 maps read-only entries into TPDOs and write-only
+ones into RPDOs only, and CANopenEditor's own EDS export writes `AccessType=ro` with PDOMapping=1
+for its TPDO-only entries; the generator keeps the direction the access allows (ODA_TPDO, ODA_RPDO).
+This note names each such entry. Firmware that maps one of them the other way needs CANopenEditor's
+bits: `pdo_attributes = "canopeneditor"` in the `[stack]` table of the .canopennode.toml file.""",
+    "[2000]\nParameterName=Status\nObjectType=0x7\nDataType=0x0006\nAccessType=ro\nDefaultValue=0\nPDOMapping=1",
+    fixed="[2000]\nParameterName=Status\nObjectType=0x7\nDataType=0x0006\nAccessType=rwr\nDefaultValue=0\nPDOMapping=1",
+    fix_safety="No automatic fix: the access type is a design decision; the setting keeps CANopenEditor's bits.",
+)
+def pdo_bits_differ(ctx: Context) -> Iterator[Finding]:
+    for obj in _objects(ctx):
+        for subindex, var in _entries(obj):
+            ours, its = pdo_bits_pair(var)
+            if ours != its:
+                where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
+                message = (f"{where}: ODA_{ours}PDO for {var.access} with PDOMapping=1; CANopenEditor writes "
+                           f"ODA_{its}PDO ([stack] pdo_attributes = \"canopeneditor\" keeps its bits)")  # fmt: skip
+                yield ctx.report("CNO010", message, ctx.at(ctx.section_of(obj, var), "PDOMapping"))
+
+
+def profile_findings(
+    device: Device, node_id: int | None = None, ignore: tuple[str, ...] = (), stack: StackConfig | None = None
+) -> list[Finding]:
     """Only the canopennode rules, for gen -t canopennode; `ignore` as in [tool.cantools-od]."""
     from .config import Selection
     from .rules import LintOptions
     from .runner import lint
 
-    return lint(device, LintOptions(node_id=node_id, profile=PROFILE), Selection(select=("CNO",), ignore=ignore))
+    return lint(
+        device, LintOptions(node_id=node_id, profile=PROFILE, stack=stack), Selection(select=("CNO",), ignore=ignore)
+    )

@@ -260,6 +260,7 @@ NAMES: dict[str, dict[str, str]] = {
         "CNO007": "default-stack-cannot-store",
         "CNO008": "nodeid-not-added-by-stack",
         "CNO009": "writable-string-without-memory",
+        "CNO010": "pdo-bits-differ-from-canopeneditor",
     },
 }
 

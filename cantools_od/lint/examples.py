@@ -45,8 +45,11 @@ _FRAME = {
     "PDOMapping=0",
 }
 # What `lint --profile canopennode` needs besides (CNO005): the error history, the EMCY COB-ID, the heartbeat
-# consumer and producer.
+# consumer and producer; the error register not mappable.
 _CANOPENNODE_FRAME = {
+    # PDOMapping=1 on a read-only entry is where the generator's bits differ from CANopenEditor's (CNO010)
+    "1001": "ParameterName=Error register\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\nDefaultValue=0\n"
+    "PDOMapping=0",
     "1003": "ParameterName=Pre-defined error field\nObjectType=0x8\nSubNumber=2",
     "1003sub0": "ParameterName=Number of errors\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=0\n"
     "PDOMapping=0",

@@ -11,6 +11,7 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 
 from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
+from ..model.canopennode import StackConfig
 from ..model.cia301.pdo import frame_bits
 
 
@@ -43,6 +44,8 @@ class LintOptions:
     node_id: int | None = None
     profile: str | None = None
     """A target's extra rules to run too: "canopennode" (lint --profile, and gen -t canopennode)."""
+    stack: StackConfig | None = None
+    """The CANopenNode build configuration the project declares (CO_CONFIG_*), for the canopennode profile."""
 
     @property
     def max_pdo_bits(self) -> int:

@@ -8,7 +8,10 @@ CANopenNode target infers what is missing (and says so).
 
 from __future__ import annotations
 
+import re
+from dataclasses import dataclass
 from enum import StrEnum
+from typing import TYPE_CHECKING
 
 from pydantic import BaseModel, ConfigDict
 
@@ -49,6 +52,11 @@ from .cia301.objects import (
     TPDO_COMM,
     TX,
 )
+from .datatypes import DOMAIN, DataType, ValueKind
+
+if TYPE_CHECKING:
+    from .device import Device
+    from .objects import Object, Variable
 
 
 class SrdoAccess(StrEnum):
@@ -203,3 +211,156 @@ CONFIG_ARRAYS = (CONSUMER_HEARTBEAT, ERROR_HISTORY)
 def stack_reads_at_init(index: int) -> bool:
     """Whether CO_CANopenInit reads the object's value from the OD: it then needs memory even without a default."""
     return index in COMMUNICATION_AREA and index not in _STACK_EXTENDED
+
+
+# --- the stack's build configuration (301/CO_config.h) ---------------------------------------
+
+# The flags of the CO_CONFIG_* switches that decide whether CANopen.c uses an object, as 301/CO_config.h
+# defines them, and the stack's defaults of those switches (what a CO_driver_target.h that says nothing gets).
+STACK_FLAGS: dict[str, int] = {
+    "CO_CONFIG_EM_PRODUCER": 0x01, "CO_CONFIG_EM_PROD_CONFIGURABLE": 0x02, "CO_CONFIG_EM_PROD_INHIBIT": 0x04,
+    "CO_CONFIG_EM_HISTORY": 0x08, "CO_CONFIG_EM_STATUS_BITS": 0x10, "CO_CONFIG_EM_CONSUMER": 0x20,
+    "CO_CONFIG_HB_CONS_ENABLE": 0x01, "CO_CONFIG_SYNC_ENABLE": 0x01, "CO_CONFIG_SYNC_PRODUCER": 0x02,
+    "CO_CONFIG_SRDO_ENABLE": 0x01,
+}  # fmt: skip
+STACK_DEFAULTS: dict[str, int] = {
+    "CO_CONFIG_EM": 0x01 | 0x08, "CO_CONFIG_HB_CONS": 0x01, "CO_CONFIG_SYNC": 0x01 | 0x02, "CO_CONFIG_SRDO": 0,
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class StackSwitch:
+    """One function of the stack that needs an object: `flag` set in `switch` turns it on."""
+
+    switch: str  # CO_CONFIG_HB_CONS
+    flag: str  # CO_CONFIG_HB_CONS_ENABLE
+
+    def spelled(self) -> str:
+        return f"{self.switch} & {self.flag}"
+
+
+# Counts and companion objects CANopen.c needs only with a function on: label → the switch; for companions,
+# the label of the counted object → the switch (1003h with the EM history, 1006h with SYNC, 13FEh/13FFh with SRDO).
+SWITCHED_COUNTS: dict[str, StackSwitch] = {
+    "EM_PROD": StackSwitch("CO_CONFIG_EM", "CO_CONFIG_EM_PRODUCER"),
+    "HB_CONS": StackSwitch("CO_CONFIG_HB_CONS", "CO_CONFIG_HB_CONS_ENABLE"),
+}
+SWITCHED_COMPANIONS: dict[str, StackSwitch] = {
+    "EM": StackSwitch("CO_CONFIG_EM", "CO_CONFIG_EM_HISTORY"),
+    "SYNC": StackSwitch("CO_CONFIG_SYNC", "CO_CONFIG_SYNC_ENABLE"),
+    "SRDO": StackSwitch("CO_CONFIG_SRDO", "CO_CONFIG_SRDO_ENABLE"),
+}
+
+
+@dataclass(frozen=True)
+class StackConfig:
+    """The build configuration a project declares: its CO_CONFIG_* values (the rest keep the stack's defaults).
+
+    `declared` is False when the project said nothing: whether a switched function is on is then unknown.
+    """
+
+    switches: tuple[tuple[str, int], ...] = ()
+    declared: bool = False
+    editor_pdo: bool = False  # keep CANopenEditor's ODA_*PDO bits where ours differ on purpose
+    sources: tuple[str, ...] = ()  # where it was declared, for messages
+
+    def value(self, switch: str) -> int:
+        return dict(self.switches).get(switch, STACK_DEFAULTS.get(switch, 0))
+
+    def needs(self, need: StackSwitch) -> bool | None:
+        """Whether the declared build uses the function; None when no configuration was declared."""
+        if not self.declared:
+            return None
+        return bool(self.value(need.switch) & STACK_FLAGS[need.flag])
+
+
+# --- PDO attributes ----------------------------------------------------------------------------
+
+
+def sdo_directions(access: str | None) -> str:
+    """The ODA_SDO_* bits of an access type: "R" (ro, const), "W" (wo), "RW" (rw, rwr, rww) or ""."""
+    if access is None:
+        return ""
+    return {"ro": "R", "const": "R", "wo": "W"}.get(access, "RW")
+
+
+def pdo_directions(word: str | None, access: str | None) -> str:
+    """The ODA_*PDO bits ("T", "R", "TR" or "") CANopenEditor gives a PDOmapping word and an access type.
+
+    An explicit direction (RPDO, or the access rww) wins, then TPDO (or rwr); optional and default
+    allow both directions whatever the access; no allows none.
+    """
+    if word == "RPDO" or access == "rww":
+        return "R"
+    if word == "TPDO" or access == "rwr":
+        return "T"
+    return "TR" if word in ("optional", "default") else ""
+
+
+def editor_pdo_word(stated: str | None, mappable: bool | None) -> str:
+    """The PDOmapping word CANopenEditor reads: an XDD's own, else an EDS's PDOMapping=1 as optional."""
+    return stated if stated is not None else ("optional" if mappable else "no")
+
+
+def pdo_bits_pair(var: Variable) -> tuple[str, str]:
+    """An entry's ODA_*PDO directions, ours and CANopenEditor's.
+
+    They differ only on an EDS's PDOMapping=1 on a ro/const or wo entry: CANopenEditor reads it as
+    `optional` and allows both directions; CiA 301 maps a read-only entry into TPDOs only and a
+    write-only one into RPDOs only, so we keep the direction the access allows (CANopenEditor's own
+    EDS export writes ro with PDOMapping=1 for its TPDO-only entries).
+    """
+    access = var.access.value if var.access else None
+    ours = pdo_directions(var.pdo_mapping_kind(), access)
+    return ours, pdo_directions(editor_pdo_word(var.stated_pdo_mapping, var.pdo_mapping), access)
+
+
+def editor_octets(text: str) -> bytes | None:
+    """An OCTET_STRING default as CANopenEditor reads it: hex bytes of one or two digits between blanks ("0",
+    "1 2 A"), which CiA 306's even-length hex does not cover; None when the text is not of that form."""
+    tokens = text.split()
+    if not tokens or not all(len(t) <= 2 and all(c in "0123456789abcdefABCDEF" for c in t) for t in tokens):
+        return None
+    return bytes(int(t, 16) for t in tokens)
+
+
+_C_FLOAT = re.compile(r"[+-]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][+-]?\d+)?[fF]")
+
+
+def editor_real(text: str) -> float | None:
+    """A REAL default written as a C float literal ("0.0f"), which CANopenEditor copies into OD.c as it is."""
+    stripped = text.strip()
+    return float(stripped[:-1]) if _C_FLOAT.fullmatch(stripped) else None
+
+
+def editor_integer(text: str) -> int | None:
+    """An integer as CANopenEditor reads it where the file's own type did not say how (an ARRAY element with
+    DataType 0, whose ARRAY gives the type): 0x hex (U and L dropped), a leading 0 octal, else decimal."""
+    stripped = text.strip()
+    if re.fullmatch(r"0[xX][0-9A-Fa-f]+[uUlL]*", stripped):
+        return int(stripped.rstrip("uUlL"), 16)
+    if re.fullmatch(r"0[0-7]+", stripped):
+        return int(stripped, 8)
+    return int(stripped) if re.fullmatch(r"-?\d+", stripped) else None
+
+
+def editor_reads(dtype: DataType, text: str) -> bool:
+    """Whether CANopenEditor takes a default that CiA 306 cannot read: any DOMAIN default (it ignores them),
+    short hex octets of an OCTET_STRING (`0`, `1 2 A`), a C float literal of a REAL (`0.0f`), an integer of an
+    entry typed only by its ARRAY."""
+    if dtype.index == DOMAIN.index:
+        return True
+    if dtype.kind is ValueKind.OCTETS:
+        return editor_octets(text) is not None
+    if dtype.kind in (ValueKind.UNSIGNED, ValueKind.SIGNED):
+        return editor_integer(text) is not None
+    return dtype.kind is ValueKind.REAL and editor_real(text) is not None
+
+
+def editor_entry_type(device: Device, var: Variable, obj: Object) -> DataType | None:
+    """The entry's type as CANopenEditor takes it: its own, else, for an ARRAY element whose DataType is 0 or
+    missing, the ARRAY's (old CANopenEditor projects write `dataType="0000"` on the elements)."""
+    dtype = device.entry_type(var, obj)
+    if dtype is None and var is not obj and obj.kind == 0x8 and not var.data_type:
+        return obj.dtype
+    return dtype

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from enum import IntEnum, StrEnum
 
-from pydantic import BaseModel, ConfigDict
+from pydantic import BaseModel, ConfigDict, PrivateAttr
 
 from .canopennode import CanopenNodeInfo
 from .datatypes import DataType, standard_type
@@ -77,6 +77,43 @@ class Variable(Section):
     download_file: str | None = None
     # CANopenNode stack metadata (XDD properties, EDS ;StorageLocation=), None when the source has none
     canopennode: CanopenNodeInfo | None = None
+    # An XDD's PDOmapping word, which `pdo_mapping` and `access` alone may not give (TPDO on an rw entry).
+    _pdo_stated: str | None = PrivateAttr(default=None)
+
+    def pdo_mapping_kind(self) -> str | None:
+        """The CiA 311 PDOmapping word: no, default, optional, TPDO or RPDO (None when the file says nothing).
+
+        The XDD's own word where it stated one; otherwise the direction the access allows
+        (ro/const/rwr TPDO, wo/rww RPDO, rw optional), as an EDS's PDOMapping=1 means.
+        """
+        stated = self.stated_pdo_mapping
+        if stated is not None:
+            return stated
+        if self.pdo_mapping is None:
+            return None
+        if not self.pdo_mapping:
+            return "no"
+        if self.access in (AccessType.RO, AccessType.CONST, AccessType.RWR):
+            return "TPDO"
+        if self.access in (AccessType.WO, AccessType.RWW):
+            return "RPDO"
+        return "optional"
+
+    def state_pdo_mapping(self, word: str) -> None:
+        """Keep the PDOmapping word an XDD states (no, default, optional, TPDO, RPDO)."""
+        if self.__pydantic_private__ is None:  # built by model_construct, which sets up no private state
+            self.__pydantic_private__ = {}
+        self._pdo_stated = word
+
+    @property
+    def stated_pdo_mapping(self) -> str | None:
+        """The PDOmapping word the file stated (an XDD); None where it said only 'mappable' or not (an EDS), or
+        where `pdo_mapping` was edited to disagree with it."""
+        private = self.__pydantic_private__
+        stated = private.get("_pdo_stated") if private is not None else None
+        if stated is None or self.pdo_mapping is None or (stated != "no") != self.pdo_mapping:
+            return None  # not stated, or `pdo_mapping` was changed since: the word no longer holds
+        return str(stated)
 
     @property
     def dtype(self) -> DataType | None:

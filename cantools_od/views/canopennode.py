@@ -37,19 +37,33 @@ from dataclasses import dataclass, field
 
 from ..identifiers import RESERVED
 from ..model import (
-    AccessType,
     CanopenNodeInfo,
     DataType,
     Device,
+    Dialect,
     NodeIdExpr,
     Object,
     ObjectKind,
+    RawValue,
     TimeValue,
     Value,
     ValueKind,
     Variable,
 )
-from ..model.canopennode import count_label_for, stack_reads_at_init, standard_storage_group
+from ..model.canopennode import (
+    RAM,
+    count_label_for,
+    editor_entry_type,
+    editor_integer,
+    editor_octets,
+    editor_pdo_word,
+    editor_real,
+    pdo_bits_pair,
+    pdo_directions,
+    sdo_directions,
+    stack_reads_at_init,
+    standard_storage_group,
+)
 from ..model.datatypes import DOMAIN
 
 VAR, ARR, REC = "VAR", "ARR", "REC"
@@ -145,10 +159,12 @@ class NodeView:
 
 
 def c_name(name: str) -> str:
-    """CANopenEditor's spelling of a display name: camelCase words, '-' as '_', '_' between capitals.
+    """CANopenEditor's spelling of a display name (v4.1 and later): camelCase words, '-' as '_', '_'
+    between capitals, '_' before a leading digit.
 
     "COB-ID SYNC message" → COB_ID_SYNCMessage, "Highest sub-index supported" →
-    highestSub_indexSupported, "Variable NV Int32" → variableNV_Int32. Application code written
+    highestSub_indexSupported, "Variable NV Int32" → variableNV_Int32, "Trigger input x8" →
+    triggerInputX8. Application code written
     against CANopenEditor's OD.h (OD_PERSIST_COMM.x1018_identity.vendor_ID) keeps compiling.
     """
     folded = unicodedata.normalize("NFKD", name).encode("ascii", "ignore").decode("ascii")
@@ -156,12 +172,16 @@ def c_name(name: str) -> str:
     for word in _WORD.findall(folded.replace("-", "_")):
         if last.isupper() and word[0].isupper():
             out += "_"
-        if len(word) > 1 and word[1].islower():
+        last = word[-1]
+        if len(word) > 1 and word[0].isalpha():
             word = word[0].upper() + word[1:]
         out += word
-        last = word[-1]
-    if len(out) > 1 and out[1].islower():
+    if out[:1].isdigit():
+        out = "_" + out
+    elif len(out) > 1 and out[0].isalpha() and out[1].islower():
         out = out[0].lower() + out[1:]
+    elif len(out) == 1:
+        out = out.lower()
     return sys.intern(out)  # members repeat from object to object (sub1, highestSub_indexSupported)
 
 
@@ -222,10 +242,8 @@ def value_bytes(dtype: DataType, value: Value | None, length: int) -> bytes | No
 
 def _attributes(dtype: DataType, var: Variable, info: CanopenNodeInfo | None) -> Attributes:
     access = var.access
-    sdo = {AccessType.WO: "W", AccessType.RO: "R", AccessType.CONST: "R", None: ""}.get(access, "RW")
-    pdo = ""
-    if var.pdo_mapping:
-        pdo = {AccessType.WO: "R", AccessType.RWW: "R", AccessType.RW: "TR", None: ""}.get(access, "T")
+    sdo = sdo_directions(access.value if access else None)
+    pdo = pdo_directions(var.pdo_mapping_kind(), access.value if access else None)
     srdo = {"tx": "T", "rx": "R", "trx": "TR"}.get(info.access_srdo.value if info and info.access_srdo else "", "")
     multibyte = dtype.is_numeric and dtype.bits in (16, 32, 64)
     return _shared_attributes(sdo, pdo, srdo, multibyte, dtype.kind in (ValueKind.STRING, ValueKind.UNICODE))
@@ -246,6 +264,8 @@ class _Builder:
         self.explain = explain
         self.inferences: list[Inference] = []
         self.defaults: dict[bytes, bytes] = {}  # equal initial values, mostly zeros, held once
+        # A CANopenEditor project (its CO_* properties, ;StorageLocation=) omits the storage group where it is RAM.
+        self.editor_project = device.dialect is Dialect.CANOPENNODE
 
     def note(self, where: str, text: str) -> None:
         # Only --explain reads them; a note per object would be a large part of a large file's view.
@@ -253,13 +273,14 @@ class _Builder:
             self.inferences.append(Inference(where, text))
 
     def entry(self, obj: Object, subindex: int, var: Variable, member: str, length: int | None = None) -> NodeEntry:
-        dtype = self.device.entry_type(var, obj)
+        dtype = editor_entry_type(self.device, var, obj)
         assert dtype is not None, "the canopennode profile refuses entries without a type"
         info = var.canopennode
         value = var.parameter_value if var.parameter_value is not None else var.default
         where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
         if isinstance(value, NodeIdExpr):
             self.note(where, f"default {value.canonical()} stored as 0x{value.offset:X}: the stack adds the node-ID")
+        value = self.as_editor_reads(where, dtype, value)
         size = length if length is not None else _length(dtype, value, info.string_length_min if info else None)
         held = value_bytes(dtype, value, size)
         textual = dtype.kind in (ValueKind.STRING, ValueKind.UNICODE, ValueKind.OCTETS)
@@ -273,11 +294,38 @@ class _Builder:
         default = self.defaults.setdefault(default, default)
         return NodeEntry(subindex, var.name, member, dtype, _attributes(dtype, var, info), size, stored, default)
 
+    def as_editor_reads(self, where: str, dtype: DataType, value: Value | None) -> Value | None:
+        """Defaults CiA 306 leaves unreadable but CANopenEditor reads (short hex octets, C float literals);
+        DOMAIN defaults ignored."""
+        if dtype.index == DOMAIN.index and value is not None:
+            self.note(where, "DOMAIN default ignored: no memory in the OD, the application streams the data "
+                             "(OD_extension_init), as in CANopenEditor")  # fmt: skip
+            return None
+        if dtype.kind is ValueKind.OCTETS and isinstance(value, RawValue):
+            octets = editor_octets(value.text)
+            if octets is not None:
+                self.note(where, f"default {value.text!r} read as the bytes {octets.hex(' ')}, as CANopenEditor does")
+                return octets
+        if dtype.kind in (ValueKind.UNSIGNED, ValueKind.SIGNED) and isinstance(value, RawValue):
+            number = editor_integer(value.text)
+            if number is not None:
+                self.note(where, f"default {value.text!r} read as {number} of the ARRAY's type, as CANopenEditor does")
+                return number
+        if dtype.kind is ValueKind.REAL and isinstance(value, RawValue):
+            real = editor_real(value.text)
+            if real is not None:
+                self.note(where, f"default {value.text!r} read as {real!r}, the C literal CANopenEditor copies")
+                return real
+        return value
+
     def settings(self, obj: Object) -> tuple[str, str | None]:
         info = obj.canopennode or CanopenNodeInfo()
         where = f"{obj.index:04X}h"
         group = info.storage_group
-        if not group:
+        if not group and self.editor_project:
+            group = RAM
+            self.note(where, f"storage group {group}: a CANopenEditor project leaves it unsaid where it is RAM")
+        elif not group:
             group = standard_storage_group(obj.index)
             self.note(where, f"storage group {group} inferred from the index")
         label = count_label_for(obj.index, obj.canopennode)
@@ -301,11 +349,28 @@ class _Builder:
         return NodeObject(obj.index, obj.name, c_name(obj.name) or "object", kind, group, label, entries)
 
 
+def keep_editor_pdo_bits(device: Device) -> list[str]:
+    """Give every entry CANopenEditor's ODA_*PDO bits (`pdo_attributes = "canopeneditor"`); lines for --explain."""
+    lines = []
+    for obj in generated_objects(device):
+        for subindex, var in sorted(obj.subs.items()) if obj.has_subs else [(0, obj)]:
+            ours, its = pdo_bits_pair(var)
+            if ours != its:
+                var.state_pdo_mapping(editor_pdo_word(var.stated_pdo_mapping, var.pdo_mapping))
+                where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
+                lines.append(f"{where}: {_bits(its)} as CANopenEditor writes it, not {_bits(ours)} (pdo_attributes)")
+    return lines
+
+
+def _bits(directions: str) -> str:
+    return f"ODA_{directions}PDO" if directions else "no PDO bit"
+
+
 def generated_objects(device: Device) -> list[Object]:
     """The objects that go into the OD: VAR, DOMAIN, ARRAY and RECORD objects not disabled."""
-    return [
+    return [  # by index, whatever the file's order: OD_find searches the list by bisection
         obj
-        for obj in device.objects.values()
+        for _, obj in sorted(device.objects.items())
         if obj.kind in _KINDS and not (obj.canopennode is not None and obj.canopennode.disabled)
     ]
 

@@ -268,17 +268,9 @@ def _eds_only(key: str) -> bool:
 
 
 def pdo_mapping_text(var: Variable) -> str | None:
-    if var.pdo_mapping is None:
-        return None
-    if "PDOmapping" in var.extra:
+    if "PDOmapping" in var.extra and var.pdo_mapping is not None:
         return var.extra["PDOmapping"]
-    if not var.pdo_mapping:
-        return "no"
-    if var.access in (AccessType.RO, AccessType.CONST, AccessType.RWR):
-        return "TPDO"
-    if var.access in (AccessType.WO, AccessType.RWW):
-        return "RPDO"
-    return "optional"
+    return var.pdo_mapping_kind()
 
 
 def _object_attributes(var: Variable, unique: str) -> list[tuple[str, object]]:

@@ -142,6 +142,9 @@ class ObjectReader:
                 self.used.add(ref)
                 self._parameter(var, owner, parameter, has_subs, extra)
         var.extra = extra
+        word = element.attrs.get("PDOmapping")
+        if word in ("no", "optional", "default", "TPDO", "RPDO"):  # now that the access is known
+            var.state_pdo_mapping(word)
 
     def _attribute(
         self, var: Variable, owner: Object, element: Element, attr: str, text: str, key: str, extra: dict[str, str]

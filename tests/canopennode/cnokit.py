@@ -16,6 +16,7 @@ from cantools_od.api import load
 from cantools_od.lint.canopennode import profile_findings
 from cantools_od.lint.runner import has_errors
 from cantools_od.model import Device
+from cantools_od.model.canopennode import StackConfig
 from cantools_od.render.canopennode import render_node_view
 from cantools_od.sniff import NotADeviceDescription
 from cantools_od.views.canopennode import build_node_view
@@ -24,6 +25,8 @@ from support import ROOT, cli_command
 
 SHARED = ROOT.parent / "shared" / "third_party"
 STACK = SHARED / "CANopenNode"
+# The blank driver's CO_driver_target.h sets no CO_CONFIG_*: the stack's defaults, declared.
+STACK_DEFAULTS = StackConfig(declared=True)
 DEMO = SHARED / "CANopenDemo-demo"
 HERE = Path(__file__).resolve().parent
 WARNINGS = ["-Wall", "-Wextra", "-Werror"]
@@ -123,8 +126,9 @@ def parallel(function: Any, items: list[Any]) -> list[Any]:
         return list(pool.map(function, items))
 
 
-def load_accepted(paths: list[Path]) -> tuple[list[Device], dict[str, list[str]]]:
-    """The devices the canopennode profile accepts, and for the others their error codes."""
+def load_accepted(paths: list[Path], stack: StackConfig | None = None) -> tuple[list[Device], dict[str, list[str]]]:
+    """The devices the canopennode profile accepts (for the declared `stack` configuration, or none), and for the
+    others their error codes."""
     kept, refused = [], {}
     for path in paths:
         try:
@@ -132,7 +136,7 @@ def load_accepted(paths: list[Path]) -> tuple[list[Device], dict[str, list[str]]
         except NotADeviceDescription as refusal:
             refused[path.name] = [refusal.code]
             continue
-        findings = profile_findings(device)
+        findings = profile_findings(device, stack=stack)
         if has_errors(findings):
             refused[path.name] = sorted({f.code for f in findings if f.severity.value == "error"})
         else:

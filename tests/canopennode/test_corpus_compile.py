@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
-from cnokit import STACK, WARNINGS, includes, load_accepted, parallel, run, stack, write_od
+from cnokit import STACK, STACK_DEFAULTS, WARNINGS, includes, load_accepted, parallel, run, stack, write_od
+
+from cantools_od.api import load
+from cantools_od.lint.canopennode import profile_findings
+from cantools_od.sniff import NotADeviceDescription
 
 from support import corpus_files
 
@@ -43,3 +48,35 @@ def test_every_accepted_corpus_file_compiles_with_gcc_and_gxx(tmp_path: Path) ->
         run(["g++", "-o", f"{od}.exe", od, "interface.o", "main.o"], cwd=tmp_path)
         objects = sum(len([o for o in d.objects.values() if o.kind.value in (2, 7, 8, 9)]) for d in devices)
         assert run([str(tmp_path / f"{od}.exe")]).stdout.strip() == str(objects)
+
+
+def test_profile_refuses_only_what_no_configuration_builds_and_reads_defaults_as_canopeneditor() -> None:
+    """Without a declared stack configuration, the switched objects (1003h, 1014h, 1016h, 1006h, SRDO) are never
+    a reason to refuse; with the stack's defaults declared, fewer files pass; CNO007 never fires on a DOMAIN."""
+    from cantools_od.model.datatypes import DOMAIN
+
+    files = corpus_files()
+    if not files:
+        import pytest
+
+        pytest.skip("../shared/eds-corpus is absent")
+    undeclared, _ = load_accepted(files)
+    defaults, _ = load_accepted(files, STACK_DEFAULTS)
+    assert {d.source for d in defaults} < {d.source for d in undeclared}
+    domain_findings = []
+    for path in files:
+        try:
+            device = load(str(path))
+        except NotADeviceDescription:
+            continue
+        for finding in profile_findings(device):
+            if finding.code == "CNO005" and finding.severity.value == "error":
+                assert re.match(r"no object counts as (NMT|EM|HB_PROD) \(", finding.message), finding
+            if finding.code == "CNO007":
+                index = int(finding.message[:4], 16)
+                obj = device.objects[index]
+                sub = finding.message.split(" ")[1].rstrip(":")
+                var = obj.subs[int(sub[3:], 16)] if sub.startswith("sub") else obj
+                dtype = device.entry_type(var, obj)
+                domain_findings += [finding.message] if dtype is not None and dtype.index == DOMAIN.index else []
+    assert domain_findings == []

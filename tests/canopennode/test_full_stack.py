@@ -7,7 +7,7 @@ import threading
 from pathlib import Path
 
 import pytest
-from cnokit import DEMO, HERE, STACK, WARNINGS, gen, load_accepted, parallel, run, stack, write_od
+from cnokit import DEMO, HERE, STACK, STACK_DEFAULTS, WARNINGS, gen, load_accepted, parallel, run, stack, write_od
 
 from support import corpus_files
 
@@ -65,7 +65,7 @@ def test_demo_device_runs_in_the_stack_single_and_multiple_od(tmp_path: Path) ->
 
 def test_accepted_corpus_files_run_in_the_stack(tmp_path: Path) -> None:
     stack()
-    devices, _ = load_accepted([STACK / "example" / "DS301_profile.eds", *corpus_files()])
+    devices, _ = load_accepted([STACK / "example" / "DS301_profile.eds", *corpus_files()], STACK_DEFAULTS)
     if len(devices) < 2:
         pytest.skip("../shared/eds-corpus is absent")
     sample = devices[:: max(1, len(devices) // 6)]  # a spread of the corpus keeps the test short

@@ -53,6 +53,8 @@ def attribute(dtype_index: int, numeric: bool, bits: int | None, var: Variable) 
     bits_set = SDO.get(var.access, 3) if var.access is not None else 0
     if var.pdo_mapping and var.access is not None:
         bits_set |= PDO.get(var.access, 12)
+    elif var.access in (AccessType.RWR, AccessType.RWW):  # CANopenEditor: rwr/rww name the direction themselves
+        bits_set |= PDO[var.access]
     if numeric and bits in (16, 32, 64):
         bits_set |= 0x40
     if dtype_index in (0x0009, 0x000B):

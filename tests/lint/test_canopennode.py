@@ -7,6 +7,7 @@ from pathlib import Path
 from cantools_od import loads
 from cantools_od.lint import LintOptions, lint
 from cantools_od.model import CanopenNodeInfo
+from cantools_od.model.canopennode import StackConfig
 
 CODES = ("CNO001", "CNO002", "CNO003", "CNO004", "CNO005", "CNO006", "CNO007", "CNO008", "CNO009")
 
@@ -52,9 +53,26 @@ def test_required_objects_missing() -> None:
     found = codes(var(0x1000, "Device type", 7) + var(0x1001, "Error register", 5))
     assert [c for c, _ in found] == ["CNO005"] * 4
     assert "EM_PROD" in found[0][1] and "HB_CONS" in found[1][1] and "HB_PROD" in found[2][1]
-    assert found[3][1] == "1001h counts as EM, so CANopen.c also uses 1003h"
+    assert found[3][1].startswith("1001h counts as EM, so CANopen.c also uses 1003h when built with CO_CONFIG_EM")
     sync = codes(REQUIRED + var(0x1005, "COB-ID SYNC", 7, "rw", "0x80"))
-    assert sync == [("CNO005", "1005h counts as SYNC, so CANopen.c also uses 1006h")]
+    assert [c for c, _ in sync] == ["CNO005"] and sync[0][1].startswith(
+        "1005h counts as SYNC, so CANopen.c also uses 1006h when built with CO_CONFIG_SYNC & CO_CONFIG_SYNC_ENABLE"
+    )
+
+
+def test_required_objects_follow_the_declared_stack_configuration() -> None:
+    device = loads(var(0x1000, "Device type", 7) + var(0x1001, "Error register", 5), "eds")
+
+    def found(stack: StackConfig | None) -> list[tuple[str, str]]:
+        return [(f.severity.value, f.message.split(":")[0]) for f in
+                lint(device, LintOptions(profile="canopennode", stack=stack)) if f.code == "CNO005"]  # fmt: skip
+
+    unknown = found(None)  # nothing declared: only what every build needs is an error
+    assert [s for s, _ in unknown] == ["warning", "warning", "error", "warning"]
+    assert "HB_PROD" in unknown[2][1]
+    assert [s for s, _ in found(StackConfig(declared=True))] == ["error"] * 4  # the stack's defaults
+    lean = StackConfig((("CO_CONFIG_EM", 0), ("CO_CONFIG_HB_CONS", 0)), declared=True)
+    assert found(lean) == [("error", "no object counts as HB_PROD (usually 1017h)")]
 
 
 def test_unsupported_type_and_unstorable_default() -> None:

@@ -98,8 +98,9 @@ def read_or_refuse(data: bytes | str, fmt: Fmt | None = None, source: str = "") 
     try:
         return loads(raw, fmt=fmt, source=source)
     except NotADeviceDescription as refusal:
-        # Refused only for what the sniffing promises: NUL bytes, nothing but blanks, or no section.
-        assert b"\0" in raw or not raw.strip() or not re.search(rb"^[ \t]*\[", raw, re.MULTILINE), refusal
+        # Refused only for what the sniffing promises: NUL bytes, nothing but blanks, no section, a JSON array.
+        section = re.search(rb"^[ \t]*\[", raw, re.MULTILINE)
+        assert b"\0" in raw or not raw.strip() or not section or "JSON" in str(refusal), refusal
         return None
 
 

@@ -75,6 +75,7 @@ def command(
     from ..eds.where import damaged_objects
     from ..identifiers import is_identifier, pin_file_for
     from ..model.cia301.pdo import frame_bits
+    from ..views.partial import unfit_values
     from ..xdd.reader import refused
     from .canopennode import prepare_canopennode
 
@@ -91,11 +92,12 @@ def command(
         report(device.diagnostics, minimum=Severity.ERROR)
         click.echo(f"{file}: error: nothing generated: the file could not be read", err=True)
         sys.exit(EXIT_FINDINGS)
-    damaged = set(damaged_objects(device))
+    unfit = unfit_values(device)  # values no generated code can spell: errors of gen's own (GEN001)
+    damaged = set(damaged_objects(device)) | set(unfit)
     device._original = None  # the file's bytes, which only the search for damage needs: gen writes no EDS
     identifiers = identifiers_for(device, file, pin_file)
     extra_inputs = prepare_canopennode(device, file, explain) if "canopennode" in targets else []
-    report(device.diagnostics, minimum=Severity.ERROR)
+    report([*device.diagnostics, *itertools.chain.from_iterable(unfit.values())], minimum=Severity.ERROR)
     # PDO code needs the PDOs to be packable; the stack checks PDOs itself.
     view, left_out = _view(device, damaged, base, node_id, identifiers, frame_bits(can_fd), not stack_only)
     if left_out:

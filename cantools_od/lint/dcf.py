@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
+from ..eds.keys import is_decimal
 from ..model import Device, Object, RawSection, Severity, Variable
 from ..model.datatypes import DOMAIN
 from . import examples as ex
@@ -157,7 +158,7 @@ def node_id_unset(ctx: Context) -> Iterator[Finding]:
 
 # ---- module concept --------------------------------------------------------------------------------------------
 
-_MODULE_NAME = re.compile(r"m([1-9][0-9]*)(moduleinfo|fixedobjects|subextends|fixed|subext)(.*)\Z", re.IGNORECASE)
+_MODULE_NAME = re.compile(r"m([1-9][0-9]{0,8})(moduleinfo|fixedobjects|subextends|fixed|subext)(.*)\Z", re.IGNORECASE)
 
 
 def _count(raw: RawSection, key: str) -> int | None:
@@ -171,7 +172,7 @@ def _count(raw: RawSection, key: str) -> int | None:
 
 
 def _listed(raw: RawSection) -> dict[str, str]:
-    return {k: v for k, v in raw.entries.items() if k.isdigit()}
+    return {k: v for k, v in raw.entries.items() if is_decimal(k)}
 
 
 @rule(
@@ -214,7 +215,7 @@ def modules(ctx: Context) -> Iterator[Finding]:
     connected = sections.get("connectedmodules")
     if connected is not None and total is not None:
         for key, text in _listed(connected).items():
-            if not (text.strip().isdigit() and 1 <= int(text) <= total):
+            if not (is_decimal(text.strip()) and 1 <= int(text) <= total):
                 message = f"[{connected.name}] {key}={text}: not a module number 1..{total}"
                 yield ctx.report("EDS070", message, ctx.at(connected, key))
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..eds.keys import is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
 from .context import ReadContext
@@ -210,7 +211,7 @@ class _Document:
                 field, key = _FILE_ATTRIBUTES[attr]
                 fields[field] = text
                 self.ctx.mark(origin, key, body, attr)
-            elif attr == "fileVersion" and text.isdigit():
+            elif attr == "fileVersion" and is_decimal(text):
                 fields["file_version"] = int(text)
                 self.ctx.mark(origin, "FileVersion", body, attr)
             elif not attr.startswith("xmlns") and attr != "xsi:type":

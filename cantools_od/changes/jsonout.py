@@ -34,9 +34,10 @@ class DiffReport(DeviceDiff):
 
 def report(diff: DeviceDiff) -> DiffReport:
     counts = diff.counts()
-    return DiffReport.model_validate(
-        {**diff.model_dump(), "summary": Summary(**{impact.value: counts[impact] for impact in Impact})}
-    )
+    # The records as they are: dumped to Python and validated again, typed values ($NODEID sums,
+    # raw text) would come back as the plain dicts of their fields, which no value type reads.
+    records = {name: getattr(diff, name) for name in DeviceDiff.model_fields}
+    return DiffReport(**records, summary=Summary(**{impact.value: counts[impact] for impact in Impact}))
 
 
 def render(diff: DeviceDiff) -> str:

@@ -36,13 +36,14 @@ def read_device(path: str, node_id: int | None = None) -> Device:
     sys.exit(EXIT_USAGE)
 
 
-def check_extension(path: str, role: str) -> None:
-    """A file whose format its extension decides must have a known one; else exit 2 with the closest."""
+def check_extension(path: str, role: str, allowed: Iterable[str] | None = None) -> None:
+    """A file whose format its extension decides must have a known one (of `allowed`, default every
+    format's); else exit 2 with the closest."""
     from ..api import SUFFIXES
     from ..names import UnknownName, check_names
 
     try:
-        check_names("file extension", [Path(path).suffix.lower()], SUFFIXES)
+        check_names("file extension", [Path(path).suffix.lower()], list(allowed or SUFFIXES))
     except UnknownName as error:
         click.echo(f"{path}: error: {role}: {error}", err=True)
         sys.exit(EXIT_USAGE)

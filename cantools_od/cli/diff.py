@@ -161,9 +161,12 @@ def _external_sides(args: tuple[str, ...], node_id: int | None) -> tuple[Side, S
 
 def _git_show(revision: str, path: Path) -> bytes | None:
     """The file at a revision, None when it does not exist there; exits 2 when git cannot answer."""
-    spec = f"{revision}:./{path.name}"
+    # From the file's folder when it exists (the path then also works from outside the repository),
+    # else from here: a folder deleted from the work tree may still be in the revision.
+    folder = path.parent if path.parent.is_dir() else Path(".")
+    spec = f"{revision}:./{path.name if folder == path.parent else path.as_posix()}"
     try:
-        result = subprocess.run(["git", "show", spec], cwd=path.parent or Path("."), capture_output=True, check=False)
+        result = subprocess.run(["git", "show", spec], cwd=folder, capture_output=True, check=False)
     except OSError as error:
         _fail(f"cannot run git: {error.strerror or error}")
     if result.returncode == 0:

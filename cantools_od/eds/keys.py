@@ -36,6 +36,17 @@ def is_decimal(text: str) -> bool:
     return text.isascii() and text.isdigit() and len(text) <= MAX_DIGITS
 
 
+def plain_int(text: str) -> int | None:
+    """A decimal, `0x` hex (or `0o`/`0b`) integer of at most MAX_DIGITS characters, else None."""
+    text = text.strip()
+    if len(text) > MAX_DIGITS or not text.isascii():
+        return None
+    try:
+        return int(text, 0)
+    except ValueError:
+        return None
+
+
 def list_number(text: str) -> int | None:
     """The number of a numbered key (`3` in an object list, `Line3`'s tail): decimal from 1 in ASCII
     digits without leading zeros, else None (the key is then kept as text)."""

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
-from ..eds.keys import is_decimal
+from ..eds.keys import is_decimal, plain_int
 from ..model import Device, Object, RawSection, Severity, Variable
 from ..model.datatypes import DOMAIN
 from . import examples as ex
@@ -164,10 +164,7 @@ _MODULE_NAME = re.compile(r"m([1-9][0-9]{0,8})(moduleinfo|fixedobjects|subextend
 def _count(raw: RawSection, key: str) -> int | None:
     for written, text in raw.entries.items():
         if written.lower() == key.lower():
-            try:
-                return int(text.strip(), 0)
-            except ValueError:
-                return None
+            return plain_int(text)
     return None
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..eds.keys import is_decimal
+from ..eds.keys import MAX_DIGITS, is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
 from .context import ReadContext
@@ -111,7 +111,10 @@ def read_with_context(
 
 
 def parse_number(text: str) -> int | None:
+    """A decimal or `0x` hex number; None for anything else, a number longer than any type needs included."""
     text = text.strip()
+    if len(text) > MAX_DIGITS:
+        return None
     try:
         return int(text, 16) if text[:2].lower() == "0x" else int(text)
     except ValueError:

@@ -288,3 +288,93 @@ def test_convert_to_one_node_names_node_id(tmp_path: Path, source: str, target: 
     result = run("convert", source, "-o", target, cwd=tmp_path)
     assert result.returncode == 2 and result.stderr.strip().endswith(said), result.stderr
     assert not (tmp_path / target).exists()
+
+
+# 7. help and README: what the table cannot check (tests/test_help_readme.py checks the rest) -----
+
+
+def test_gen_explain_without_canopennode_is_refused_with_a_reason(tmp_path: Path) -> None:
+    written(tmp_path, "drive.eds", DRIVE)
+    result = run("gen", "drive.eds", "-t", "c", "-o", "out", "--explain", cwd=tmp_path)
+    assert result.returncode == 2 and "--explain" in result.stderr and "-t canopennode" in result.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_gen_name_error_states_the_rule(tmp_path: Path) -> None:
+    written(tmp_path, "drive.eds", DRIVE)
+    result = run("gen", "drive.eds", "-t", "c", "-o", "out", "--name", "Drive", cwd=tmp_path)
+    assert result.returncode == 2 and "snake_case" in result.stderr, result.stderr
+
+
+def test_select_takes_the_names_rules_prints(tmp_path: Path) -> None:
+    data = replaced(DRIVE, b"DefaultValue=0x0000", b"DefaultValue=70000", after=b"[6040]")
+    written(tmp_path, "drive.eds", data)
+    by_name = run("lint", "drive.eds", "--select", "value-outside-type-range", "--format", "json", cwd=tmp_path)
+    by_code = run("lint", "drive.eds", "--select", "EDS034", "--format", "json", cwd=tmp_path)
+    assert by_name.returncode == 1 and by_name.stdout == by_code.stdout and "EDS034" in by_name.stdout
+    ignored = run("lint", "drive.eds", "--ignore", "value-outside-type-range", "--format", "json", cwd=tmp_path)
+    assert "EDS034" not in ignored.stdout
+
+
+# 8. long work, lint --fix, fmt --diff -----------------------------------------------------------
+
+
+def on_a_terminal(*args: str, cwd: Path) -> str:
+    """What the command prints on stderr when stderr is a terminal (a pseudo-terminal here)."""
+    import pty
+
+    leader, follower = pty.openpty()
+    env = {key: value for key, value in os.environ.items() if key != "CI"} | {"TERM": "xterm"}
+    with subprocess.Popen([*cli_command(), *args], cwd=cwd, stdout=subprocess.DEVNULL, stderr=follower, env=env):
+        os.close(follower)
+        chunks = []
+        while True:
+            try:
+                chunk = os.read(leader, 4096)
+            except OSError:
+                break
+            if not chunk:
+                break
+            chunks.append(chunk)
+    os.close(leader)
+    return b"".join(chunks).decode("utf-8", "replace")
+
+
+@pytest.mark.parametrize(
+    ("args", "shown"),
+    [
+        (["lint", "a.eds", "b.eds", "--format", "json"], "lint: 2/2 b.eds"),
+        (["fmt", "--check", "a.eds", "b.eds"], "fmt: 2/2 b.eds"),
+        (["gen", "a.eds", "-t", "c", "-o", "out"], "gen: 2 a.c"),
+        (["diff", "a.eds", "b.eds"], "diff: 2 comparing"),
+    ],
+    ids=lambda a: a[0] if isinstance(a, list) else "",
+)
+def test_progress_on_a_terminal_only(tmp_path: Path, args: list[str], shown: str) -> None:
+    written(tmp_path, "a.eds", DRIVE)
+    written(tmp_path, "b.eds", DRIVE.replace(b"ParameterName=Controlword", b"ParameterName=Control word"))
+    assert shown in on_a_terminal(*args, cwd=tmp_path)
+    piped = run(*args, cwd=tmp_path)
+    assert shown.split(":")[0] + ":" not in piped.stderr and "\x1b[K" not in piped.stderr + piped.stdout
+
+
+def test_lint_fix_says_what_it_fixed(tmp_path: Path) -> None:
+    data = DRIVE.replace(b"ParameterName=Controlword", b"parametername=Controlword", 1)
+    written(tmp_path, "drive.eds", data)
+    before = run("lint", "drive.eds", "--format", "json", cwd=tmp_path)
+    assert '"code": "DIA018"' in before.stdout, before.stdout
+    result = run("lint", "--fix", "drive.eds", cwd=tmp_path)
+    assert "drive.eds: fixed DIA018" in result.stderr, result.stderr
+    assert b"ParameterName=Controlword" in (tmp_path / "drive.eds").read_bytes()
+
+
+def test_fmt_diff_of_line_ends_alone_is_one_note(tmp_path: Path) -> None:
+    canonical = run("fmt", written(tmp_path, "drive.eds", DRIVE).name, cwd=tmp_path)
+    assert canonical.returncode == 0
+    lf = (tmp_path / "drive.eds").read_bytes()
+    path = written(tmp_path, "drive.eds", lf.replace(b"\n", b"\r\n"))
+    result = run("fmt", "--diff", "drive.eds", cwd=tmp_path)
+    assert result.returncode == 1
+    assert result.stdout == "", result.stdout[:300]
+    assert "drive.eds: note: line ends CRLF become LF" in result.stderr
+    assert path.read_bytes() == lf.replace(b"\n", b"\r\n")

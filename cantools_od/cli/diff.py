@@ -16,7 +16,7 @@ from typing import NoReturn
 import click
 
 from ..model import Device, Severity
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, node_id_option, read_device
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, node_id_option, read_device
 
 NULL_DEVICE = "/dev/null"  # git's name for the missing side of an added or deleted file
 DEVICE_SUFFIXES = (".eds", ".dcf", ".json", ".xdd", ".xdc", ".xpd")
@@ -35,7 +35,7 @@ def _fail(message: str) -> NoReturn:
     type=click.Choice(["breaking", "any", "never"]),
     default="never",
     show_default=True,
-    help="Exit 1 when a breaking change (or any change) is found.",
+    help="Exit 1 when a breaking change (or any change) is found; never: exit 0 whatever changed.",
 )
 @click.option("--git", "git_mode", is_flag=True, help="ARGS are REV1 REV2 PATH (or REV PATH: against the work tree).")
 @node_id_option
@@ -52,11 +52,13 @@ def command(
     new_pins: str | None,
     color: bool | None,
 ) -> None:
-    """Compare OLD and NEW (EDS, DCF or JSON, in any mix) object by object, and class each change
+    """Compare OLD and NEW (EDS, DCF, XDD, XDC or JSON, in any mix) object by object, and class each change
     as breaking, compatible, value or cosmetic. Differences of spelling only (radix, key case,
     section order) are no changes. As a git external diff driver it takes git's 7 arguments."""
     from ..changes import compare
 
+    progress = Progress("diff")  # on a terminal: what it is doing while large files are read and compared
+    progress.step("reading")
     if git_mode:
         if len(args) not in (2, 3):
             _fail("--git takes REV1 REV2 PATH, or REV PATH")
@@ -72,7 +74,9 @@ def command(
     else:
         _fail("give OLD and NEW (or --git REV1 REV2 PATH)")
     pins = [_explicit_pins(old_pins), _explicit_pins(new_pins)]
+    progress.step("comparing")
     result = compare(old.device, new.device, node_id, pins[0] or old.pins, pins[1] or new.pins)
+    progress.clear()
     click.echo(_render(result, fmt), color=color if fmt == "text" else False)
     found = result.breaking if fail_on == "breaking" else not result.empty if fail_on == "any" else False
     sys.exit(EXIT_FINDINGS if found else EXIT_OK)

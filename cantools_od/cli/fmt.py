@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from ..model import Severity
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, read_device, report, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, errors_to_fix, read_device, report, write_outputs
 
 RADIXES = ("canonical", "as-written", "hex", "decimal")
 
@@ -39,8 +39,11 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | N
         sys.exit(EXIT_USAGE)
 
     changed = refused = 0
+    progress = Progress("fmt", len(files))
     for name in files:
+        progress.step(name)
         device = read_device(name)
+        progress.clear()
         report(device.diagnostics, minimum=Severity.ERROR)
         problems = errors_to_fix(device)
         if problems:

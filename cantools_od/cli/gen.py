@@ -16,6 +16,7 @@ from ..model import Device, Severity
 from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
+    Progress,
     check_extension,
     identifiers_for,
     node_id_option,
@@ -28,6 +29,13 @@ from .common import (
 if TYPE_CHECKING:
     from ..identifiers import Identifiers
     from ..views.codegen import DeviceView
+
+
+NAME_RULE = (
+    "Base name of the generated files and symbols, in snake_case: lower-case letters and digits in words joined "
+    "by single _, starting with a letter, no C, C++, Rust or Python keyword (default: FILE's stem in snake_case). "
+    "-t canopennode alone takes any C identifier (default OD)."
+)
 
 
 def default_name(file: str) -> str:
@@ -43,7 +51,7 @@ def default_name(file: str) -> str:
     type=click.Choice(["c", "rust", "python", "markdown", "canopennode"]), help="What to generate; repeat for several.",
 )  # fmt: skip
 @click.option("-o", "--output", "outdir", required=True, type=click.Path(file_okay=False), help="Output folder.")
-@click.option("--name", help="Base name of the generated files and symbols (default: FILE's stem).")
+@click.option("--name", help=NAME_RULE)
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--depfile", type=click.Path(dir_okay=False), help="Write a Makefile-style depfile for build systems.")
 @click.option("--explain", is_flag=True, help="List every CANopenNode setting that was inferred (-t canopennode).")
@@ -79,13 +87,18 @@ def command(
     from ..xdd.reader import refused
     from .canopennode import prepare_canopennode
 
+    if explain and "canopennode" not in targets:
+        raise click.BadParameter(
+            "it lists the settings -t canopennode infers; add -t canopennode", param_hint="--explain"
+        )
     base = name or default_name(file)
     stack_only = set(targets) == {"canopennode"}  # the stack's own names: OD, OD1 (any C identifier)
     if name and {"c", "canopennode"} <= set(targets):
         raise click.BadParameter("-t c and -t canopennode would both write NAME.h/NAME.c; run them apart",
                                  param_hint="--name")  # fmt: skip
     if not (is_identifier(base) or (stack_only and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", base))):
-        raise click.BadParameter(f"{base!r} is not a valid identifier", param_hint="--name")
+        rule = "snake_case: lower-case letters and digits in words joined by single _, and no keyword"
+        raise click.BadParameter(f"{base!r} is not a valid identifier ({rule})", param_hint="--name")
     check_extension(file, "input")
     device = read_device(file, node_id)
     if refused(device):  # no model of the file exists: an empty output would pass a build that must fail
@@ -112,7 +125,7 @@ def command(
         pins = pin_file_for(file, pin_file)
         files = _with_depfile(files, Path(depfile), [file, *([str(pins)] if pins else []), *extra_inputs])
     # Each file is rendered as it is written; a failure anywhere leaves every output as it was.
-    write_outputs(files)
+    write_outputs(_counted(files))
     sys.exit(EXIT_OK)
 
 
@@ -152,6 +165,15 @@ def _files(
         for filename, pieces in streamer(target)(target_view).items():
             text = itertools.chain([left_out_note(filename, left_out)], pieces)
             yield outdir / filename, (piece.encode("utf-8") for piece in text)
+
+
+def _counted(files: Iterator[tuple[Path, Iterable[bytes]]]) -> Iterator[tuple[Path, Iterable[bytes]]]:
+    """`files`, each named on a terminal as it is rendered (large devices take seconds a file)."""
+    progress = Progress("gen")
+    for path, content in files:
+        progress.step(path.name)
+        yield path, content
+    progress.clear()
 
 
 def _with_depfile(

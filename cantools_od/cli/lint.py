@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import sys
+from collections import Counter
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, read_device, write_outputs
 
 if TYPE_CHECKING:
     from ..lint import Finding
@@ -23,8 +24,12 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 @click.option(
     "--format", "fmt", type=click.Choice(["text", "json", "sarif", "github"]), default="text", show_default=True
 )
-@click.option("--select", multiple=True, help="Only these codes, code prefixes or families (comma-separated).")
-@click.option("--ignore", multiple=True, help="Skip these codes, code prefixes or families (comma-separated).")
+@click.option(
+    "--select", multiple=True, help="Only these codes, code prefixes, rule names or families (comma-separated)."
+)
+@click.option(
+    "--ignore", multiple=True, help="Skip these codes, code prefixes, rule names or families (comma-separated)."
+)
 @click.option("--fix", is_flag=True, help="Apply safe fixes in place; only the touched lines change.")
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")
@@ -43,7 +48,7 @@ def command(
     network: bool,
     profile: str | None,
 ) -> None:
-    """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
+    """Check EDS/DCF/XDD/XDC FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
     from ..api import dumps, format_for
     from ..lint import LintOptions, has_errors, lint, load_selection
     from ..lint.config import check_selectors
@@ -63,14 +68,17 @@ def command(
     options = LintOptions(can_fd=can_fd, node_id=node_id, profile=profile)
     findings: list[Finding] = []
     devices = []
-    for name in files:
+    for name in Progress("lint", len(files)).over(files) if len(files) > 1 else files:
         device = read_device(name, node_id)
         result = lint(device, options, selection)
         if fix and any(f.fix is not None and f.fix.safe for f in result):
+            fixed = Counter(f.code for f in result if f.fix is not None and f.fix.safe)
             for finding in result:
                 if finding.fix is not None and finding.fix.safe:
                     finding.fix.apply(device)
             write_outputs({Path(name): dumps(device, format_for(Path(name)))})
+            said = ", ".join(f"{code} ({count})" if count > 1 else code for code, count in sorted(fixed.items()))
+            click.echo(f"{name}: fixed {said}", err=True)
             device = read_device(name, node_id)
             result = lint(device, options, selection)
         devices.append(device)

@@ -31,7 +31,8 @@ from .common import (
 )
 @node_id_option
 def command(source: str, output: str, node_id: int | None) -> None:
-    """Convert SOURCE to OUTPUT. The same format in and out keeps the original
+    """Convert SOURCE to OUTPUT between EDS, DCF, XDD (.xdd, .xpd), XDC and JSON, by their
+    extensions. The same format in and out keeps the original
     layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id. A SOURCE
     with errors is not converted (exit 1)."""
     from ..api import dumps, format_for

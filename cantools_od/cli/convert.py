@@ -35,7 +35,7 @@ def command(source: str, output: str, node_id: int | None) -> None:
     extensions. The same format in and out keeps the original
     layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id. A SOURCE
     with errors is not converted (exit 1)."""
-    from ..api import dumps, format_for
+    from ..api import dumps, format_for, loads
 
     check_extension(source, "input")
     check_extension(output, "output")
@@ -56,5 +56,10 @@ def command(source: str, output: str, node_id: int | None) -> None:
     except ValueError as error:
         click.echo(f"{source}: error: {error}", err=True)
         sys.exit(EXIT_USAGE)
+    if fmt_in != fmt_out:  # what the target has no place for is said, section by section
+        from ..losses import losses
+
+        for lost in losses(device, loads(data, fmt=fmt_out, node_id=node_id), fmt_out):
+            click.echo(f"{source}: warning: {lost}", err=True)
     write_outputs({Path(output): data})
     sys.exit(EXIT_OK)

@@ -198,7 +198,8 @@ class Case:
 
 
 def cases(seed: int, count: int, names: list[str]) -> list[tuple[Case, bytes]]:
-    """`count` cases from `seed`: sources and commands in turn, mutations at random."""
+    """`count` cases from `seed`: sources and commands in turn (from a command that depends on the seed),
+    mutations at random."""
     rng = random.Random(seed)
     found = sources()
     chosen = [name for name in names if name in found] or sorted(found)
@@ -206,7 +207,7 @@ def cases(seed: int, count: int, names: list[str]) -> list[tuple[Case, bytes]]:
     commands = sorted(COMMANDS)
     for number in range(count):
         source = chosen[number % len(chosen)]
-        command = commands[(number // len(chosen)) % len(commands)]
+        command = commands[(number // len(chosen) + seed) % len(commands)]  # each seed starts elsewhere
         case_rng = random.Random(rng.getrandbits(64))
         mutations, data = mutated(case_rng, found[source])
         out.append((Case(seed, source, tuple(mutations), command), data))

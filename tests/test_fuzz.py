@@ -6,6 +6,7 @@ Below them, what earlier runs found, each as a fixed example of its own.
 
 from __future__ import annotations
 
+from collections import Counter
 from pathlib import Path
 
 import pytest
@@ -40,8 +41,10 @@ def test_every_command_on_damaged_files(
 
 
 def test_the_cases_cover_every_command_and_source(originals: dict[str, bytes]) -> None:
+    every = [pair for chunk in range(CHUNKS) for pair in cases(SEED + chunk, PER_CHUNK, [])]
+    commands = Counter(case.command for case, _ in every)
+    assert set(commands) == set(COMMANDS) and min(commands.values()) >= 100, commands
     chosen = cases(SEED, PER_CHUNK, [])
-    assert {case.command for case, _ in chosen} == set(COMMANDS)
     assert {case.source for case, _ in chosen} == set(originals)
     assert len({data for _, data in chosen}) > PER_CHUNK * 0.9  # mutated, and each differently
 

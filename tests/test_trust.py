@@ -277,9 +277,9 @@ def test_diff_git_names_what_is_missing(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize(
     ("source", "target", "said"),
-    [("drive.eds", "out.dcf", "a DCF describes one node: give --node-id N to make one from an EDS"),
-     ("drive.eds", "out.xdc", "an XDC describes one node: give --node-id N to make one from an EDS"),
-     ("drive.xdd", "out.xdc", "an XDC describes one node: give --node-id N to make one from an XDD")],
+    [("drive.eds", "out.dcf", "a DCF describes one node: give its node-ID (--node-id N) to make one from an EDS"),
+     ("drive.eds", "out.xdc", "an XDC describes one node: give its node-ID (--node-id N) to make one from an EDS"),
+     ("drive.xdd", "out.xdc", "an XDC describes one node: give its node-ID (--node-id N) to make one from an XDD")],
 )  # fmt: skip
 def test_convert_to_one_node_names_node_id(tmp_path: Path, source: str, target: str, said: str) -> None:
     written(tmp_path, "drive.eds", DRIVE)

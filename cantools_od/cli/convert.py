@@ -49,7 +49,10 @@ def command(source: str, output: str, node_id: int | None) -> None:
     if fmt_out in ("dcf", "xdc") and not device.is_dcf and device.node_id is None:
         made = "a DCF" if fmt_out == "dcf" else "an XDC"
         kind = {"eds": "an EDS", "xdd": "an XDD", "json": "a JSON model"}.get(fmt_in, "a device description")
-        click.echo(f"{source}: error: {made} describes one node: give --node-id N to make one from {kind}", err=True)
+        click.echo(
+            f"{source}: error: {made} describes one node: give its node-ID (--node-id N) to make one from {kind}",
+            err=True,
+        )
         sys.exit(EXIT_USAGE)
     try:
         data = dumps(device, fmt_out, style="preserve" if fmt_in == fmt_out else "canonical")

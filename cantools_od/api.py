@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 from pathlib import Path
 from typing import Literal
@@ -52,6 +53,7 @@ def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: 
 
 
 def _json_model(raw: bytes, source: str, node_id: int | None, strict: bool) -> Device:
+    _check_model_keys(raw)
     try:
         device = Device.model_validate_json(raw)
     except ValidationError as error:
@@ -64,6 +66,34 @@ def _json_model(raw: bytes, source: str, node_id: int | None, strict: bool) -> D
     if node_id is not None:
         device.node_id = node_id
     return device
+
+
+def _check_model_keys(raw: bytes) -> None:
+    """JSON that is no model at all (an array, a number, `{"name": ...}` of some other tool) is no
+    device description (EDS000); a model with keys it does not have is a broken model (JSN001)."""
+    try:
+        parsed = json.loads(raw)
+    except ValueError:
+        return  # not JSON: the caller decides (an EDS starting with "{", or JSN001)
+    if not isinstance(parsed, dict):
+        raise NotADeviceDescription(
+            f"JSON that is not a cantools-od model (a {_json_kind(parsed)})", what="a device description"
+        )
+    known = Device.model_fields.keys()
+    if not parsed or not known & parsed.keys():
+        keys = ", ".join(sorted(parsed)[:5]) or "none"
+        raise NotADeviceDescription(
+            f"JSON that is not a cantools-od model (its keys: {keys})", what="a device description"
+        )
+    unknown = sorted(parsed.keys() - known)
+    if unknown:
+        raise NotADeviceDescription(
+            f"unknown keys: {', '.join(unknown[:5])}", what="a cantools-od model", code="JSN001"
+        )
+
+
+def _json_kind(value: object) -> str:
+    return {list: "list", str: "string", bool: "boolean"}.get(type(value), "number" if value is not None else "null")
 
 
 def _not_json(error: ValidationError) -> bool:

@@ -134,7 +134,7 @@ class _Existing:
                 out.write(block)
                 left -= len(block)
         except OSError as error:
-            raise CannotWrite(item.path, _reason(error)) from None
+            raise CannotWrite(item.path, _reason(error, item.path)) from None
 
     def close(self) -> None:
         if self.handle is not None:
@@ -164,7 +164,7 @@ def _write_temp_if_changed(item: _Pending, content: Content, created: list[Path]
             out.flush()
             os.fsync(out.fileno())
         except OSError as error:
-            raise CannotWrite(item.path, _reason(error)) from None
+            raise CannotWrite(item.path, _reason(error, item.path)) from None
         return True
     finally:
         existing.close()
@@ -177,7 +177,7 @@ def _write(item: _Pending, out: BinaryIO, chunk: bytes) -> None:
     try:
         out.write(chunk)
     except OSError as error:
-        raise CannotWrite(item.path, _reason(error)) from None
+        raise CannotWrite(item.path, _reason(error, item.path)) from None
 
 
 def _open_temp(item: _Pending, created: list[Path]) -> BinaryIO:
@@ -191,23 +191,23 @@ def _open_temp(item: _Pending, created: list[Path]) -> BinaryIO:
     except FileNotFoundError:
         existing = None
     except OSError as error:
-        raise CannotWrite(item.path, _reason(error)) from None
+        raise CannotWrite(item.path, _reason(error, item.path)) from None
     try:
         temp, fd = _create_temp(target)
     except OSError as error:
-        raise CannotWrite(item.path, _reason(error)) from None
+        raise CannotWrite(item.path, _reason(error, item.path)) from None
     item.temp = temp
     try:
         handle = os.fdopen(fd, "wb")
     except OSError as error:
         os.close(fd)
-        raise CannotWrite(item.path, _reason(error)) from None
+        raise CannotWrite(item.path, _reason(error, item.path)) from None
     if existing is not None:
         try:
             _keep_owner_and_mode(handle.fileno(), existing)
         except OSError as error:
             handle.close()
-            raise CannotWrite(item.path, _reason(error)) from None
+            raise CannotWrite(item.path, _reason(error, item.path)) from None
     return handle
 
 
@@ -219,7 +219,7 @@ def _make_folder(item: _Pending, created: list[Path]) -> None:
         except FileExistsError:
             continue
         except OSError as error:
-            raise CannotWrite(item.path, _reason(error)) from None
+            raise CannotWrite(item.path, _reason(error, item.path)) from None
         created.append(folder)
 
 
@@ -246,7 +246,7 @@ def _rename(item: _Pending) -> None:
     try:
         os.replace(item.temp, item.target)
     except OSError as error:
-        raise CannotWrite(item.path, _reason(error)) from None
+        raise CannotWrite(item.path, _reason(error, item.path)) from None
     item.temp = None
 
 
@@ -264,9 +264,19 @@ def _sync_folder(folder: Path) -> None:
         os.close(fd)
 
 
-def _reason(error: OSError) -> str:
+def _reason(error: OSError, path: Path) -> str:
     if error.errno == errno.EISDIR:
         return "it is a folder"
-    if error.errno in (errno.ENOTDIR, errno.EEXIST) and error.filename is not None:
-        return f"{error.filename} is not a folder"
+    if error.errno in (errno.ENOTDIR, errno.EEXIST):
+        blocking = _not_a_folder(path)
+        if blocking is not None:
+            return f"{blocking} is not a folder"
     return error.strerror or str(error)
+
+
+def _not_a_folder(path: Path) -> Path | None:
+    """The first folder on the way to `path` that is a file instead (`regfile` of `regfile/out.xdd`)."""
+    for parent in reversed(path.parents):
+        if parent != Path(".") and parent.exists() and not parent.is_dir():
+            return parent
+    return None

@@ -8,6 +8,7 @@ model, which a formatter would then write back over the user's file.
 
 from __future__ import annotations
 
+import json
 import re
 from typing import Literal
 
@@ -49,9 +50,20 @@ def sniff(data: bytes, name: str = "") -> Kind:
         return "xml"
     if body.startswith(b"{"):
         return "json"
+    if body.startswith(b"[") and _is_json_array(body):  # `[1,2,3]` has a "section" but is JSON
+        raise NotADeviceDescription("JSON that is not a cantools-od model (an array)", what="a device description")
     if not has_section(body):
         raise NotADeviceDescription("text without a [section] header")
     return "eds"
+
+
+def _is_json_array(data: bytes) -> bool:
+    """JSON of an array with several items or nested ones; `[]` or `[1000]` alone is also a section header."""
+    try:
+        parsed = json.loads(data)
+    except ValueError:
+        return False
+    return len(parsed) > 1 or any(isinstance(item, (list, dict)) for item in parsed)
 
 
 def has_section(data: bytes) -> bool:

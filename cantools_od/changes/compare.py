@@ -164,10 +164,12 @@ def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     yield from _entry_changes(sides, Entry(old, old, None), Entry(new, new, None))
     if old.links != new.links:
         yield _as_text(Kind.OBJECT_LINKS, Impact.COSMETIC, index, None, "links", _links(old.links), _links(new.links))
-    for sub in sorted(set(old.subs) | set(new.subs)):
-        if sub not in new.subs:
+    # Sub-objects count only under an object type that has them (a VAR with [xxxxsubN] sections has none).
+    old_subs, new_subs = (obj.subs if obj.has_subs else {} for obj in (old, new))
+    for sub in sorted(set(old_subs) | set(new_subs)):
+        if sub not in new_subs:
             yield _removed(sides.old, old, sub, Kind.SUB_REMOVED)
-        elif sub not in old.subs:
+        elif sub not in old_subs:
             yield _added(sides.new, new, sub, Kind.SUB_ADDED)
         else:
             yield from _sub_changes(sides, Entry(old.subs[sub], old, sub), Entry(new.subs[sub], new, sub))

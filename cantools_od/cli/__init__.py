@@ -14,13 +14,13 @@ from .. import __version__
 
 # command name → (module, help line)
 COMMANDS = {
-    "dump": ("dump", "Show the object dictionary as a table or as JSON."),
+    "dump": ("dump", "Show the object dictionary of an EDS, DCF, XDD, XDC or JSON file as a table or as JSON."),
     "fmt": ("fmt", "Rewrite files in canonical form."),
-    "convert": ("convert", "Convert between EDS, DCF and JSON."),
+    "convert": ("convert", "Convert between EDS, DCF, XDD, XDC and JSON."),
     "pdo": ("pdo", "Show the PDO map with bit layouts."),
-    "gen": ("gen", "Generate C, Rust, Python and Markdown from an object dictionary."),
+    "gen": ("gen", "Generate C, Rust, Python, Markdown and CANopenNode OD.h/OD.c from an object dictionary."),
     "ids": ("ids", "Print the identifiers generated code uses, as a pin file."),
-    "lint": ("lint", "Check EDS/DCF files against CiA 306/301 and PDO rules."),
+    "lint": ("lint", "Check EDS/DCF/XDD/XDC files against CiA 306/311/301 and PDO rules."),
     "lsp": ("lsp", "Language server for editors: lint, hover, definitions, fixes, formatting."),
     "rules": ("rules", "List the lint rules, or explain one."),
     "cmake-dir": ("cmake_dir", "Print the folder of the CMake package."),

@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import sys
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -36,13 +37,14 @@ def read_device(path: str, node_id: int | None = None) -> Device:
     sys.exit(EXIT_USAGE)
 
 
-def check_extension(path: str, role: str) -> None:
-    """A file whose format its extension decides must have a known one; else exit 2 with the closest."""
+def check_extension(path: str, role: str, allowed: Iterable[str] | None = None) -> None:
+    """A file whose format its extension decides must have a known one (of `allowed`, default every
+    format's); else exit 2 with the closest."""
     from ..api import SUFFIXES
     from ..names import UnknownName, check_names
 
     try:
-        check_names("file extension", [Path(path).suffix.lower()], SUFFIXES)
+        check_names("file extension", [Path(path).suffix.lower()], list(allowed or SUFFIXES))
     except UnknownName as error:
         click.echo(f"{path}: error: {role}: {error}", err=True)
         sys.exit(EXIT_USAGE)
@@ -109,3 +111,37 @@ def identifiers_for(device: Device, file: str, pin_file: str | None) -> Identifi
     except ValueError as error:
         click.echo(f"{path}: error: {error}", err=True)
     sys.exit(EXIT_USAGE)
+
+
+class Progress:
+    """A count of long work on stderr, on a terminal only: nothing reaches a pipe, a file or a CI log.
+
+    Each step rewrites one line (`lint: 12/97 device.eds`); `clear` takes it away before the command
+    prints anything of its own."""
+
+    def __init__(self, what: str, total: int | None = None) -> None:
+        self.what, self.total, self.count = what, total, 0
+        self.shown = _on_terminal()
+
+    def step(self, label: str) -> None:
+        self.count += 1
+        if self.shown:
+            of = f"/{self.total}" if self.total else ""
+            # the cursor goes back to the start: a message printed next writes over the line
+            click.echo(f"\r\x1b[K{self.what}: {self.count}{of} {label}\r", err=True, nl=False)
+
+    def clear(self) -> None:
+        """Take the line away, before the command prints something of its own."""
+        if self.shown and self.count:
+            click.echo("\r\x1b[K", err=True, nl=False)
+
+    def over(self, items: Iterable[str]) -> Iterator[str]:
+        """The items, each counted as a step before it is worked on; the line is cleared after the last."""
+        for item in items:
+            self.step(item)
+            yield item
+        self.clear()
+
+
+def _on_terminal() -> bool:
+    return sys.stderr.isatty() and not os.environ.get("CI") and os.environ.get("TERM") != "dumb"

@@ -31,10 +31,11 @@ from .common import (
 )
 @node_id_option
 def command(source: str, output: str, node_id: int | None) -> None:
-    """Convert SOURCE to OUTPUT. The same format in and out keeps the original
+    """Convert SOURCE to OUTPUT between EDS, DCF, XDD (.xdd, .xpd), XDC and JSON, by their
+    extensions. The same format in and out keeps the original
     layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id. A SOURCE
     with errors is not converted (exit 1)."""
-    from ..api import dumps, format_for
+    from ..api import dumps, format_for, loads
 
     check_extension(source, "input")
     check_extension(output, "output")
@@ -45,10 +46,23 @@ def command(source: str, output: str, node_id: int | None) -> None:
         click.echo(f"{source}: error: not converted: {problems}", err=True)
         sys.exit(EXIT_FINDINGS)
     fmt_in, fmt_out = format_for(Path(source)), format_for(Path(output))
+    if fmt_out in ("dcf", "xdc") and not device.is_dcf and device.node_id is None:
+        made = "a DCF" if fmt_out == "dcf" else "an XDC"
+        kind = {"eds": "an EDS", "xdd": "an XDD", "json": "a JSON model"}.get(fmt_in, "a device description")
+        click.echo(
+            f"{source}: error: {made} describes one node: give its node-ID (--node-id N) to make one from {kind}",
+            err=True,
+        )
+        sys.exit(EXIT_USAGE)
     try:
         data = dumps(device, fmt_out, style="preserve" if fmt_in == fmt_out else "canonical")
     except ValueError as error:
         click.echo(f"{source}: error: {error}", err=True)
         sys.exit(EXIT_USAGE)
+    if fmt_in != fmt_out:  # what the target has no place for is said, section by section
+        from ..losses import losses
+
+        for lost in losses(device, loads(data, fmt=fmt_out, node_id=node_id), fmt_out):
+            click.echo(f"{source}: warning: {lost}", err=True)
     write_outputs({Path(output): data})
     sys.exit(EXIT_OK)

@@ -16,7 +16,7 @@ from typing import NoReturn
 import click
 
 from ..model import Device, Severity
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, node_id_option, read_device
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, node_id_option, read_device
 
 NULL_DEVICE = "/dev/null"  # git's name for the missing side of an added or deleted file
 DEVICE_SUFFIXES = (".eds", ".dcf", ".json", ".xdd", ".xdc", ".xpd")
@@ -36,7 +36,7 @@ def _fail(message: str) -> NoReturn:
     default="never",
     show_default=True,
     help="Exit 1 when a change that breaks the bus (wire), generated code (code), either (breaking), or any change "
-    "is found.",
+    "is found; never: exit 0 whatever changed.",
 )
 @click.option("--git", "git_mode", is_flag=True, help="ARGS are REV1 REV2 PATH (or REV PATH: against the work tree).")
 @node_id_option
@@ -53,7 +53,7 @@ def command(
     new_pins: str | None,
     color: bool | None,
 ) -> None:
-    """Compare OLD and NEW (EDS, DCF, XDD/XDC or JSON, in any mix) object by object, and class each
+    """Compare OLD and NEW (EDS, DCF, XDD, XDC or JSON, in any mix) object by object, and class each
     change as breaking (for the bus, generated code or both), compatible, value or cosmetic.
     Differences of spelling only (radix, key case, section order) are no changes. As a git external
     diff driver it takes git's 7 arguments."""
@@ -76,6 +76,8 @@ def _run(
     from ..changes import compare
 
     old_pins, new_pins = pin_files
+    progress = Progress("diff")  # on a terminal: what it is doing while large files are read and compared
+    progress.step("reading")
     if git_mode:
         if len(args) not in (2, 3):
             _fail("--git takes REV1 REV2 PATH, or REV PATH")
@@ -91,7 +93,9 @@ def _run(
     else:
         _fail("give OLD and NEW (or --git REV1 REV2 PATH)")
     pins = [_explicit_pins(old_pins), _explicit_pins(new_pins)]
+    progress.step("comparing")
     result = compare(old.device, new.device, node_id, pins[0] or old.pins, pins[1] or new.pins)
+    progress.clear()
     click.echo(_render(result, fmt), color=color if fmt == "text" else False)
     sys.exit(EXIT_FINDINGS if _found(result, fail_on) else EXIT_OK)
 
@@ -194,9 +198,12 @@ def _external_sides(args: tuple[str, ...], node_id: int | None) -> tuple[Side, S
 
 def _git_show(revision: str, path: Path) -> bytes | None:
     """The file at a revision, None when it does not exist there; exits 2 when git cannot answer."""
-    spec = f"{revision}:./{path.name}"
+    # From the file's folder when it exists (the path then also works from outside the repository),
+    # else from here: a folder deleted from the work tree may still be in the revision.
+    folder = path.parent if path.parent.is_dir() else Path(".")
+    spec = f"{revision}:./{path.name if folder == path.parent else path.as_posix()}"
     try:
-        result = subprocess.run(["git", "show", spec], cwd=path.parent or Path("."), capture_output=True, check=False)
+        result = subprocess.run(["git", "show", spec], cwd=folder, capture_output=True, check=False)
     except OSError as error:
         _fail(f"cannot run git: {error.strerror or error}")
     if result.returncode == 0:

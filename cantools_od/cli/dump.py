@@ -14,7 +14,8 @@ from .common import EXIT_FINDINGS, EXIT_OK, node_id_option, read_device, report
 @click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text", show_default=True)
 @node_id_option
 def command(file: str, fmt: str, node_id: int | None) -> None:
-    """Show FILE's object dictionary."""
+    """Show the object dictionary of FILE (EDS, DCF, XDD, XDC or JSON) as a table, or the whole
+    model as JSON (--format json)."""
     from ..api import dumps
     from ..views.table import render_table
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from ..model import Severity
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, read_device, report, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, errors_to_fix, read_device, report, write_outputs
 
 RADIXES = ("canonical", "as-written", "hex", "decimal")
 
@@ -29,6 +29,7 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | N
     peer reader reads what the original said. A file is written only when its
     content changes, and never when it has errors (exit 1)."""
     from ..api import dumps, format_for
+    from ..eds.decode import mixed_encoding
     from ..lint.config import load_int_style
 
     try:
@@ -38,8 +39,11 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | N
         sys.exit(EXIT_USAGE)
 
     changed = refused = 0
+    progress = Progress("fmt", len(files))
     for name in files:
+        progress.step(name)
         device = read_device(name)
+        progress.clear()
         report(device.diagnostics, minimum=Severity.ERROR)
         problems = errors_to_fix(device)
         if problems:
@@ -50,22 +54,44 @@ def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | N
             continue
         path = Path(name)
         original = path.read_bytes()
+        mixed = mixed_encoding(original)
+        if mixed is not None:  # read as Windows-1252, its UTF-8 letters are mojibake: never save that
+            click.echo(f"{name}: error: not formatted: {mixed}; save it as UTF-8 first", err=True)
+            refused += 1
+            continue
         formatted = dumps(device, format_for(path), style="canonical", int_style=int_style)
         if formatted == original:
             continue
         changed += 1
         if show_diff:
-            sys.stdout.writelines(
-                difflib.unified_diff(
-                    original.decode("utf-8", "replace").splitlines(keepends=True),
-                    formatted.decode("utf-8").splitlines(keepends=True),
-                    fromfile=name,
-                    tofile=name,
-                )
-            )
+            _show_diff(name, original, formatted)
         if check or show_diff:
             click.echo(f"would reformat {name}", err=True)
         else:
             write_outputs({path: formatted})
             click.echo(f"reformatted {name}", err=True)
     sys.exit(EXIT_FINDINGS if refused or (changed and (check or show_diff)) else EXIT_OK)
+
+
+def _show_diff(name: str, original: bytes, formatted: bytes) -> None:
+    """A unified diff of the lines' text; a change of line ends alone is one note, not every line twice."""
+    before = original.decode("utf-8", "replace")
+    after = formatted.decode("utf-8")
+    old_ends = {_ending(line) for line in before.splitlines(keepends=True)} - {"", "LF"}
+    if old_ends:
+        click.echo(f"{name}: note: line ends {'/'.join(sorted(old_ends))} become LF", err=True)
+    sys.stdout.writelines(
+        difflib.unified_diff(
+            [line + "\n" for line in before.splitlines()],
+            [line + "\n" for line in after.splitlines()],
+            fromfile=name,
+            tofile=name,
+        )
+    )
+
+
+def _ending(line: str) -> str:
+    for end, shown in (("\r\n", "CRLF"), ("\r", "CR"), ("\n", "LF")):
+        if line.endswith(end):
+            return shown
+    return ""

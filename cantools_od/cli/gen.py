@@ -18,6 +18,7 @@ from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
     EXIT_USAGE,
+    Progress,
     check_extension,
     identifiers_for,
     node_id_option,
@@ -30,6 +31,13 @@ from .common import (
 if TYPE_CHECKING:
     from ..identifiers import Identifiers
     from ..views.codegen import DeviceView
+
+
+NAME_RULE = (
+    "Base name of the generated files and symbols, in snake_case: lower-case letters and digits in words joined "
+    "by single _, starting with a letter, no C, C++, Rust or Python keyword (default: FILE's stem in snake_case). "
+    "-t canopennode alone takes any C identifier (default OD)."
+)
 
 
 def default_name(file: str) -> str:
@@ -46,7 +54,7 @@ def default_name(file: str) -> str:
     help="What to generate; repeat for several (dbc: the PDOs at the node-ID, for trace tools).",
 )  # fmt: skip
 @click.option("-o", "--output", "outdir", required=True, type=click.Path(file_okay=False), help="Output folder.")
-@click.option("--name", help="Base name of the generated files and symbols (default: FILE's stem).")
+@click.option("--name", help=NAME_RULE)
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--depfile", type=click.Path(dir_okay=False), help="Write a Makefile-style depfile for build systems.")
 @click.option("--explain", is_flag=True, help="List every CANopenNode setting that was inferred (-t canopennode).")
@@ -80,29 +88,37 @@ def command(
     from ..eds.where import damaged_objects
     from ..identifiers import is_identifier, pin_file_for
     from ..model.cia301.pdo import frame_bits
+    from ..views.partial import unfit_values
     from ..xdd.reader import refused
     from .canopennode import prepare_canopennode
 
+    if explain and "canopennode" not in targets:
+        raise click.BadParameter(
+            "it lists the settings -t canopennode infers; add -t canopennode", param_hint="--explain"
+        )
     base = name or default_name(file)
     stack_only = set(targets) == {"canopennode"}  # the stack's own names: OD, OD1 (any C identifier)
     if name and {"c", "canopennode"} <= set(targets):
         raise click.BadParameter("-t c and -t canopennode would both write NAME.h/NAME.c; run them apart",
                                  param_hint="--name")  # fmt: skip
     if not (is_identifier(base) or (stack_only and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", base))):
-        raise click.BadParameter(f"{base!r} is not a valid identifier", param_hint="--name")
+        rule = "snake_case: lower-case letters and digits in words joined by single _, and no keyword"
+        raise click.BadParameter(f"{base!r} is not a valid identifier ({rule})", param_hint="--name")
     check_extension(file, "input")
     device = read_device(file, node_id)
     if refused(device):  # no model of the file exists: an empty output would pass a build that must fail
         report(device.diagnostics, minimum=Severity.ERROR)
         click.echo(f"{file}: error: nothing generated: the file could not be read", err=True)
         sys.exit(EXIT_FINDINGS)
+    unfit = unfit_values(device)  # values no generated code can spell: errors of gen's own (GEN001)
     damaged = set(damaged_objects(device))
     if stack_only:
         keep_editor_readable(device, damaged)
+    damaged |= set(unfit)
     device._original = None  # the file's bytes, which only the search for damage needs: gen writes no EDS
     identifiers = identifiers_for(device, file, pin_file)
     extra_inputs = prepare_canopennode(device, file, explain, stack_files) if "canopennode" in targets else []
-    report(device.diagnostics, minimum=Severity.ERROR)
+    report([*device.diagnostics, *itertools.chain.from_iterable(unfit.values())], minimum=Severity.ERROR)
     # PDO code needs the PDOs to be packable; the stack checks PDOs itself.
     view, left_out = _view(device, damaged, base, node_id, identifiers, frame_bits(can_fd), not stack_only)
     if left_out:
@@ -120,7 +136,7 @@ def command(
         pins = pin_file_for(file, pin_file)
         files = _with_depfile(files, Path(depfile), [file, *([str(pins)] if pins else []), *extra_inputs, *stack_files])
     # Each file is rendered as it is written; a failure anywhere leaves every output as it was.
-    write_outputs(files)
+    write_outputs(_counted(files))
     sys.exit(EXIT_OK)
 
 
@@ -173,6 +189,15 @@ def _files(
         for filename, pieces in streamer(target)(target_view).items():
             text = itertools.chain([left_out_note(filename, left_out)], pieces)
             yield outdir / filename, (piece.encode("utf-8") for piece in text)
+
+
+def _counted(files: Iterator[tuple[Path, Iterable[bytes]]]) -> Iterator[tuple[Path, Iterable[bytes]]]:
+    """`files`, each named on a terminal as it is rendered (large devices take seconds a file)."""
+    progress = Progress("gen")
+    for path, content in files:
+        progress.step(path.name)
+        yield path, content
+    progress.clear()
 
 
 def _with_depfile(

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from typing import Literal
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, check_extension, write_outputs
+
+OUTPUT_SUFFIXES = (".eds", ".xdd", ".xpd", ".json")  # a DCF or XDC is for one node: convert makes it
 
 LAYOUT_CHOICES = ["auto", "text", "cells", "csv", "tsv", "xlsx", "markdown"]
 
@@ -17,7 +18,7 @@ LAYOUT_CHOICES = ["auto", "text", "cells", "csv", "tsv", "xlsx", "markdown"]
 @click.argument("sources", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @click.option(
     "-o", "--output", required=True, type=click.Path(dir_okay=False),
-    help="File to write: .eds (or .json for the model with its manual line numbers).",
+    help="File to write: .eds, .xdd/.xpd, or .json (the model with its manual line numbers).",
 )  # fmt: skip
 @click.option("--overrides", type=click.Path(dir_okay=False), help="TOML file resolving conflicts (see docs).")
 @click.option("--report", "report_file", type=click.Path(dir_okay=False), help="Write a Markdown import report.")
@@ -48,11 +49,12 @@ def command(
     Exit status: 0 written; 1 written, but with --strict a conflict was left to the policy or
     an entry lacks a data type or access the sources never state; 2 a source or the overrides
     file could not be read, or no object was found."""
-    from ..api import dumps
+    from ..api import dumps, format_for
     from ..model import Severity
     from ..tableimport import UnreadableInput, import_tables
     from ..tableimport.merge import POLICIES
 
+    check_extension(output, "output", OUTPUT_SUFFIXES)
     chosen_policy = next((p for p in POLICIES if p == policy), None)
     try:
         result = import_tables(
@@ -73,8 +75,7 @@ def command(
     if not result.device.objects:
         click.echo(f"{output}: error: no object found in the sources; nothing written [IMP002]", err=True)
         sys.exit(EXIT_USAGE)
-    fmt: Literal["json", "eds"] = "json" if Path(output).suffix.lower() == ".json" else "eds"
-    outputs = {Path(output): dumps(result.device, fmt, "canonical")}
+    outputs = {Path(output): dumps(result.device, format_for(Path(output)), "canonical")}
     if report_file:
         outputs[Path(report_file)] = result.report().encode("utf-8")
     write_outputs(outputs)

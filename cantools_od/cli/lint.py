@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+from collections import Counter
 from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -10,7 +11,7 @@ from typing import TYPE_CHECKING
 import click
 
 from .canopennode import load_stack_config, stack_config_option
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, read_device, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, read_device, write_outputs
 
 if TYPE_CHECKING:
     from ..lint import Finding
@@ -26,8 +27,12 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 @click.option(
     "--format", "fmt", type=click.Choice(["text", "json", "sarif", "github"]), default="text", show_default=True
 )
-@click.option("--select", multiple=True, help="Only these codes, code prefixes or families (comma-separated).")
-@click.option("--ignore", multiple=True, help="Skip these codes, code prefixes or families (comma-separated).")
+@click.option(
+    "--select", multiple=True, help="Only these codes, code prefixes, rule names or families (comma-separated)."
+)
+@click.option(
+    "--ignore", multiple=True, help="Skip these codes, code prefixes, rule names or families (comma-separated)."
+)
 @click.option("--fix", is_flag=True, help="Apply safe fixes in place; only the touched lines change.")
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")
@@ -53,7 +58,7 @@ def command(
     profile: str | None,
     stack_files: tuple[str, ...],
 ) -> None:
-    """Check EDS/DCF FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
+    """Check EDS/DCF/XDD/XDC FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
     from ..api import dumps, format_for
     from ..lint import LintOptions, has_errors, lint, load_selection
     from ..lint.config import check_selectors
@@ -79,16 +84,20 @@ def command(
         sys.exit(EXIT_USAGE)
     for bus in buses:
         findings.extend(_bus_findings(bus, defines, selection))
-    for name in (name for name in files if name not in buses):
+    devices_files = [name for name in files if name not in buses]
+    for name in Progress("lint", len(devices_files)).over(devices_files) if len(devices_files) > 1 else devices_files:
         device = read_device(name, node_id)
         if profile == "canopennode":  # the configuration each project declares beside its file
             options = replace(options, stack=load_stack_config(name, stack_files))
         result = lint(device, options, selection)
         if fix and any(f.fix is not None and f.fix.safe for f in result):
+            fixed = Counter(f.code for f in result if f.fix is not None and f.fix.safe)
             for finding in result:
                 if finding.fix is not None and finding.fix.safe:
                     finding.fix.apply(device)
             write_outputs({Path(name): dumps(device, format_for(Path(name)))})
+            said = ", ".join(f"{code} ({count})" if count > 1 else code for code, count in sorted(fixed.items()))
+            click.echo(f"{name}: fixed {said}", err=True)
             device = read_device(name, node_id)
             result = lint(device, options, selection)
         devices.append(device)

@@ -25,7 +25,8 @@ from .common import (
 @node_id_option
 @pins_option
 def command(file: str, fmt: str, node_id: int | None, pin_file: str | None) -> None:
-    """Show the PDOs FILE configures, from its default (or DCF) values."""
+    """Show the PDOs FILE configures, from its default (or DCF) values: drawn bit by bit, or as
+    JSON (--format json)."""
     from ..model import NodeIdExpr
     from ..views.layout import draw
     from ..views.pdo import pdo_map

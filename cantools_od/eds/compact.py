@@ -17,7 +17,7 @@ from ..model.cia301.pdo import (
 )
 from ..model.datatypes import UNSIGNED8
 from . import ini
-from .keys import Kind
+from .keys import Kind, is_decimal, list_number
 from .report import Report
 from .sections import collect, raw_section
 from .typed_values import type_entry
@@ -78,7 +78,7 @@ def apply_compact_sections(device: Device, sections: list[tuple[int, str, ini.In
             _keep(device, section, report)
             continue
         collected = collect(section, {"nrofentries": ("NrOfEntries", "count", Kind.INT)}, report)
-        keys = [k for k in collected.extra if k.isdigit() and k == str(int(k)) and 1 <= int(k) <= 0xFE]
+        keys = [k for k in collected.extra if (list_number(k) or 0xFF) <= 0xFE]
         if len(keys) != len(collected.extra):
             odd = ", ".join(k for k in collected.extra if k not in keys)
             report.error(
@@ -128,7 +128,7 @@ def _object_links(device: Device, obj: Object, section: ini.IniSection, report: 
             target, _ = parse_int(text)
         except ValueError:
             target = None
-        if not (key.isdigit() and isinstance(target, int)):
+        if not (is_decimal(key) and isinstance(target, int)):
             report.error("EDS104", f"[{section.name}] {key}={text}: not a numbered object index", section.line, 1)
             _keep(device, section, report)
             return

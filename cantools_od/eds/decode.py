@@ -43,6 +43,26 @@ def decode_as(data: bytes) -> tuple[str, str, str | None]:
     return data.decode(CP1252, ERRORS), CP1252, f"not UTF-8 ({where}); read as Windows-1252"
 
 
+_UTF8_SEQUENCE = re.compile(rb"[\xc2-\xdf][\x80-\xbf]|[\xe0-\xef][\x80-\xbf]{2}|[\xf0-\xf4][\x80-\xbf]{3}")
+
+
+def mixed_encoding(data: bytes) -> str | None:
+    """Why `data` is UTF-8 in part and not in other parts, or None: such text read as Windows-1252
+    turns its UTF-8 letters into mojibake (`Müller` into `MÃ¼ller`), which a rewrite would save."""
+    body = data.removeprefix(_BOM)
+    try:
+        body.decode("utf-8")
+    except UnicodeDecodeError as error:
+        utf8 = _UTF8_SEQUENCE.search(body)
+        if utf8 is None:
+            return None  # Windows-1252 throughout
+        return (
+            f"UTF-8 text (from offset {utf8.start()}) with a byte that is not "
+            f"(0x{body[error.start]:02X} at offset {error.start + len(data) - len(body)})"
+        )
+    return None
+
+
 def decode(data: bytes) -> tuple[str, str | None]:
     """The text, and a note naming the fallback encoding when UTF-8 failed."""
     text, _, note = decode_as(data)

@@ -31,6 +31,36 @@ def normalize(key: str) -> str:
     return key.replace(" ", "").replace("\t", "").lower()
 
 
+MAX_DIGITS = 64
+"""More digits than any number in a device description can need (UNSIGNED64 has 20 decimal, 16 hex):
+a longer one is text, never an int (Python refuses `int()` of over 4300 digits, and prints none)."""
+
+
+def is_decimal(text: str) -> bool:
+    """A decimal number in ASCII digits of a sane length: `str.isdigit` also takes `²` or Arabic-Indic digits,
+    which `int` then refuses or misreads."""
+    return text.isascii() and text.isdigit() and len(text) <= MAX_DIGITS
+
+
+def plain_int(text: str) -> int | None:
+    """A decimal, `0x` hex (or `0o`/`0b`) integer of at most MAX_DIGITS characters, else None."""
+    text = text.strip()
+    if len(text) > MAX_DIGITS or not text.isascii():
+        return None
+    try:
+        return int(text, 0)
+    except ValueError:
+        return None
+
+
+def list_number(text: str) -> int | None:
+    """The number of a numbered key (`3` in an object list, `Line3`'s tail): decimal from 1 in ASCII
+    digits without leading zeros, else None (the key is then kept as text)."""
+    if not is_decimal(text) or text.startswith("0"):
+        return None
+    return int(text)
+
+
 def _table(*specs: KeySpec) -> dict[str, KeySpec]:
     return {normalize(spec[0]): spec for spec in specs}
 

@@ -299,8 +299,9 @@ def _numbered(
     numbered: dict[int, str] = {}
     for key in list(collected.extra):
         tail = key[len(prefix) :] if key.lower().startswith(prefix.lower()) else ""
-        if tail.isdigit() and tail == str(int(tail)) and int(tail) > 0:
-            numbered[int(tail)] = collected.extra.pop(key)
+        number = keys.list_number(tail)
+        if number is not None:
+            numbered[number] = collected.extra.pop(key)
     return collected, collected.fields.get("count"), numbered
 
 
@@ -329,15 +330,15 @@ def _repeated_positions(section: ini.IniSection) -> dict[int, list[tuple[int, in
         return {}  # the common case
     by_position: dict[int, list[tuple[int, int, int]]] = {}
     for entry in section.entries:
-        key = entry.key
-        if not (key.isdigit() and key == str(int(key)) and int(key) > 0):
+        position = keys.list_number(entry.key)
+        if position is None:
             continue
         try:
             index, _ = parse_int(entry.value)
         except ValueError:
             continue
         if isinstance(index, int) and 0 <= index <= 0xFFFF:
-            by_position.setdefault(int(key), []).append((entry.line, entry.key_col, index))
+            by_position.setdefault(position, []).append((entry.line, entry.key_col, index))
     return {position: found for position, found in by_position.items() if len(found) > 1}
 
 

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from ..model import NodeIdExpr, RawValue, Severity, TimeValue, Value, ValueKind
+from .keys import MAX_DIGITS
 
 Note = tuple[str, Severity, str]
 
@@ -66,7 +67,13 @@ def _terms(text: str) -> list[tuple[str, str]]:
     return found
 
 
+def _too_long(text: str) -> ValueError:
+    return ValueError(f"a number of {len(text)} characters; no data type holds one so long")
+
+
 def _number(token: str) -> tuple[int, list[Note]]:
+    if len(token) > MAX_DIGITS:
+        raise _too_long(token)
     notes: list[Note] = []
     digits = _SUFFIX.sub("", token)  # u and l are no hex digits, so this is safe for hex too
     if digits != token:
@@ -134,8 +141,14 @@ def _parse_integer_expr(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
 def parse_int(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
     """An integer or `$NODEID` sum; raises ValueError when it is neither."""
     if _PLAIN_INT.match(text):
+        if len(text) > MAX_DIGITS:
+            raise _too_long(text)
         return int(text, 0), []
     return _parse_integer_expr(text)
+
+
+_NUMBERS = (ValueKind.UNSIGNED, ValueKind.SIGNED, ValueKind.REAL, ValueKind.BOOL, ValueKind.TIME)
+_LONGEST_NUMBER = 255  # CiA 306's longest line; a number never needs as much
 
 
 @lru_cache(maxsize=65536)
@@ -143,6 +156,9 @@ def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: 
     """Read `text` as a value of the given kind. Never raises."""
     if text == "":
         return Parsed(None)
+    if len(text) > _LONGEST_NUMBER and kind in _NUMBERS:  # quoted in no message: it may be megabytes
+        why = f"a value of {len(text)} characters; no {type_name} is written so long"
+        return Parsed(RawValue(text=text), (("EDS030", Severity.ERROR, why),))
     try:
         return _parse(text, kind, bits, type_name)
     except ValueError as error:

@@ -315,6 +315,9 @@ def find(selector: str) -> Code | None:
 
 
 def matches(selector: str, code: str) -> bool:
-    """Whether a --select/--ignore entry covers a code: a family name, or a code prefix."""
+    """Whether a --select/--ignore entry covers a code: a family name, a code prefix, or the code's kebab-case name."""
     family = family_of(code)
-    return code.startswith(selector.upper()) or (family is not None and family == selector.lower())
+    if family is None:
+        return code.startswith(selector.upper())
+    wanted = selector.lower()
+    return code.startswith(selector.upper()) or family == wanted or NAMES[family][code] == wanted

@@ -157,16 +157,19 @@ def _codes(table: dict[str, object], key: str, path: Path) -> tuple[str, ...]:
 def check_selectors(selectors: tuple[str, ...]) -> None:
     """Raise UnknownName for a selector that is no rule code, code prefix (`EDS`, `PDO0`) or family name."""
     from .codes import FAMILIES, load
+    from .codes import codes as all_codes
     from .rules import RULES
 
     load()
     codes = set(RULES)
     prefixes = {code[:length] for code in codes for length in range(1, len(code))}
     families = set(FAMILIES)
-    hint = "a rule code (`cantools-od rules` lists them), a prefix such as EDS or PDO0, or a family "
+    hint = "a rule code or name (`cantools-od rules` lists them), a prefix such as EDS or PDO0, or a family "
     hint += f"({', '.join(sorted(families))})"
 
+    names = {code.name for code in all_codes().values()}  # kebab-case, as `rules` prints them
+
     def accepted(name: str) -> bool:
-        return name in prefixes or name.lower() in families
+        return name in prefixes or name.lower() in families or name.lower() in names
 
     check_names("rule code", selectors, codes, accepts=accepted, hint=hint)

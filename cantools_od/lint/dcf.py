@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
+from ..eds.keys import is_decimal, plain_int
 from ..model import Device, Object, RawSection, Severity, Variable
 from ..model.cia301.modules import has_module_section, object_section_name
 from ..model.datatypes import DOMAIN
@@ -158,21 +159,18 @@ def node_id_unset(ctx: Context) -> Iterator[Finding]:
 
 # ---- module concept --------------------------------------------------------------------------------------------
 
-_MODULE_NAME = re.compile(r"m([1-9][0-9]*)(moduleinfo|fixedobjects|subextends|fixed|subext)(.*)\Z", re.IGNORECASE)
+_MODULE_NAME = re.compile(r"m([1-9][0-9]{0,8})(moduleinfo|fixedobjects|subextends|fixed|subext)(.*)\Z", re.IGNORECASE)
 
 
 def _count(raw: RawSection, key: str) -> int | None:
     for written, text in raw.entries.items():
         if written.lower() == key.lower():
-            try:
-                return int(text.strip(), 0)
-            except ValueError:
-                return None
+            return plain_int(text)
     return None
 
 
 def _listed(raw: RawSection) -> dict[str, str]:
-    return {k: v for k, v in raw.entries.items() if k.isdigit()}
+    return {k: v for k, v in raw.entries.items() if is_decimal(k)}
 
 
 @rule(
@@ -216,7 +214,7 @@ def modules(ctx: Context) -> Iterator[Finding]:
     connected = sections.get("connectedmodules")
     if connected is not None and total is not None:
         for key, text in _listed(connected).items():
-            if not (text.strip().isdigit() and 1 <= int(text) <= total):
+            if not (is_decimal(text.strip()) and 1 <= int(text) <= total):
                 message = f"[{connected.name}] {key}={text}: not a module number 1..{total}"
                 yield ctx.report("EDS070", message, ctx.at(connected, key))
 

@@ -480,7 +480,7 @@ def _fix_repeats(name: str) -> Callable[[Device], None]:
 
 def _reported(key: str) -> bool:
     """Positions whose value was not an index: the reader reported them (EDS030)."""
-    return key.isdigit() and key == str(int(key)) and int(key) > 0
+    return keys.list_number(key) is not None
 
 
 def _fix_renumber(name: str) -> Callable[[Device], None]:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+import struct
 from dataclasses import dataclass
 from enum import StrEnum
 
@@ -44,6 +46,32 @@ class DataType:
         if self.kind is ValueKind.SIGNED:
             return -(1 << (self.bits - 1)), (1 << (self.bits - 1)) - 1
         return None
+
+    def number_problem(self, value: int | float) -> str | None:
+        """Why the number `value` is no value of this numeric type (outside an integer type's range,
+        not finite, beyond REAL32), or None when it is one; None for types that are not numeric."""
+        if self.kind is ValueKind.REAL:
+            if not math.isfinite(value):
+                return f"{value!r} is not a finite number"
+            if self.bits == 32 and not _fits_real32(float(value)):
+                return f"{value!r} is outside {self.name}"
+            return None
+        bounds = self.int_range()
+        if bounds is None:
+            return None
+        if isinstance(value, float) and not value.is_integer():
+            return f"{value!r} is not an integer"
+        if not bounds[0] <= value <= bounds[1]:
+            return f"{value} is outside {self.name} ({bounds[0]}..{bounds[1]})"
+        return None
+
+
+def _fits_real32(value: float) -> bool:
+    try:
+        narrowed: float = struct.unpack("<f", struct.pack("<f", value))[0]
+    except OverflowError:
+        return False
+    return narrowed != 0.0 or value == 0.0
 
 
 def _t(index: int, name: str, kind: ValueKind, bits: int | None) -> DataType:

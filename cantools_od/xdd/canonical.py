@@ -78,7 +78,13 @@ def _text(text: str) -> str:
 
 
 def _attrs(pairs: Sequence[tuple[str, object]]) -> str:
-    return "".join(f" {name}={_attr(value)}" for name, value in pairs if value is not None)
+    """The attributes, each once: text kept because it could not be read (listed after the field it
+    would have filled) takes the field's place, as XML allows an attribute only once."""
+    chosen: dict[str, object] = {}
+    for name, value in pairs:
+        if value is not None:
+            chosen[name] = value
+    return "".join(f" {name}={_attr(value)}" for name, value in chosen.items())
 
 
 class _Out:

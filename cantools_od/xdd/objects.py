@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from ..eds.keys import is_decimal
 from ..eds.values import parse_value
 from ..model import (
     AccessType,
@@ -284,7 +285,7 @@ class ObjectReader:
             value = text == "true"
         elif name == "CO_accessSRDO" and text in SrdoAccess.__members__.values():
             value = SrdoAccess(text)
-        elif name == "CO_stringLengthMin" and text.isdigit():
+        elif name == "CO_stringLengthMin" and is_decimal(text):
             value = int(text)
         if name.startswith(EDS_PROPERTY):
             extra[name[len(EDS_PROPERTY) :]] = text  # an EDS key with no CiA 311 form, kept by our writer

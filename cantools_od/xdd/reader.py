@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..eds.keys import MAX_DIGITS, is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
 from . import REFUSED_CODES as REFUSED_CODES  # where writers and tests have always found them
@@ -103,7 +104,10 @@ def read_with_context(
 
 
 def parse_number(text: str) -> int | None:
+    """A decimal or `0x` hex number; None for anything else, a number longer than any type needs included."""
     text = text.strip()
+    if len(text) > MAX_DIGITS:
+        return None
     try:
         return int(text, 16) if text[:2].lower() == "0x" else int(text)
     except ValueError:
@@ -203,7 +207,7 @@ class _Document:
                 field, key = _FILE_ATTRIBUTES[attr]
                 fields[field] = text
                 self.ctx.mark(origin, key, body, attr)
-            elif attr == "fileVersion" and text.isdigit():
+            elif attr == "fileVersion" and is_decimal(text):
                 fields["file_version"] = int(text)
                 self.ctx.mark(origin, "FileVersion", body, attr)
             elif not attr.startswith("xmlns") and attr != "xsi:type":

@@ -63,7 +63,7 @@ class _Unsupported(Exception):
 
 def dumps_xml(device: Device, xdc: bool = False, preserve: bool = True) -> bytes:
     if xdc and not device.is_dcf and device.node_id is None:
-        raise ValueError("an XDD becomes an XDC for one node: give its node-ID")
+        raise ValueError("an XDC describes one node: give its node-ID")
     original = device._original
     if original is not None and refused(device):
         return original  # not read as a device description: never replaced by what little was read

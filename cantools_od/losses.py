@@ -1,0 +1,39 @@
+"""What a format cannot hold: the sections of a device that its output in another format does not
+give back when read again, measured on the output itself rather than declared, so that `convert`
+never drops something without a word.
+"""
+
+from __future__ import annotations
+
+from .model import Device
+
+# Sections compared, their names as a user knows them, and the formats that keep each.
+_SECTIONS: tuple[tuple[str, str, str], ...] = (
+    ("commissioning", "[DeviceComissioning] (node-ID, bit rate, node name)", "XDC and DCF keep it"),
+    ("comments", "[Comments]", "EDS and DCF keep it"),
+    ("dummy_usage", "[DummyUsage]", "EDS and DCF keep it"),
+    ("module_sections", "the module sections (M1SubExtends, ...)", "EDS and DCF keep them"),
+    ("trailing_comments", "the comment lines at the end of the file", "EDS and DCF keep them"),
+)
+
+
+def losses(device: Device, written: Device, fmt: str) -> list[str]:
+    """One line per section of `device` that `written` (its output in `fmt`, read back) lacks or holds
+    otherwise: `[Comments] is not kept in XDD (EDS and DCF keep it)`."""
+    before, after = device.content(), written.content()
+    found = []
+    for key, label, keeper in _SECTIONS:
+        old, new = before.get(key), after.get(key)
+        if old in (None, [], {}) or old == new:
+            continue
+        how = "is not kept"
+        if isinstance(old, dict) and isinstance(new, dict):  # some fields kept: name the others
+            fields = sorted(name for name in old if name not in ("extra", "comments") and old[name] != new.get(name))
+            how = f"is not all kept ({', '.join(fields) or 'unknown keys'})"
+        found.append(f"{label} {how} in {fmt.upper()}" + ("" if fmt.upper() in keeper else f" ({keeper})"))
+    kept = {section.name for section in written.other_sections}
+    dropped = list(dict.fromkeys(section.name for section in device.other_sections if section.name not in kept))
+    if dropped:
+        names = ", ".join(f"[{name}]" for name in dropped[:5]) + (" ..." if len(dropped) > 5 else "")
+        found.append(f"{names} {'is' if len(dropped) == 1 else 'are'} not kept in {fmt.upper()}")
+    return found

@@ -1,0 +1,89 @@
+"""`convert` says, section by section, what the target format cannot hold, and which format can.
+
+Every corpus file goes through every format pair; what each pair loses is listed (the test's
+`losses` property in the JUnit report), every loss is one that the format truly has no place for
+(the section read back from the output differs), and none goes unsaid."""
+
+from __future__ import annotations
+
+from collections import Counter
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from cantools_od import dumps, load, loads
+from cantools_od.api import Format
+from cantools_od.cli import main
+from cantools_od.losses import losses
+from cantools_od.sniff import NotADeviceDescription
+
+from support import CORPUS, EXAMPLES
+
+FORMATS: tuple[Format, ...] = ("eds", "dcf", "xdd", "xdc", "json")
+SUFFIX = {"eds": ".eds", "dcf": ".dcf", "xdd": ".xdd", "xdc": ".xdc", "json": ".json"}
+# Sections whose content a format may lack: each must be named when it is lost.
+SAID = {
+    "commissioning": "[DeviceComissioning]",
+    "comments": "[Comments]",
+    "dummy_usage": "[DummyUsage]",
+    "module_sections": "module sections",
+    "trailing_comments": "comment lines at the end",
+}
+
+
+def files() -> list[Path]:
+    found = sorted(EXAMPLES.glob("*.eds"))
+    for folder in (CORPUS, CORPUS.parent / "xdd"):
+        if folder.is_dir():
+            found += sorted(p for p in folder.iterdir() if p.suffix.lower() in (".eds", ".dcf", ".xdd", ".xdc"))
+    return found
+
+
+def unsaid(device_content: dict[str, object], back_content: dict[str, object], said: list[str]) -> list[str]:
+    """Sections that differ after the round trip but that no loss line names."""
+    missing = []
+    for key, label in SAID.items():
+        old = device_content.get(key)
+        if old not in (None, [], {}) and old != back_content.get(key) and not any(label in s for s in said):
+            missing.append(key)
+    return missing
+
+
+@pytest.mark.parametrize("path", files(), ids=lambda p: p.name)
+def test_every_corpus_file_through_every_format_pair(path: Path, record_property: pytest.RecordProperty) -> None:
+    table: Counter[tuple[str, str, str]] = Counter()
+    problems = []
+    try:
+        device = load(path, node_id=5)
+    except NotADeviceDescription:
+        pytest.skip("no device description")
+    source = "xdd" if path.suffix.lower() in (".xdd", ".xdc") else "eds"
+    content = device.content()
+    for target in FORMATS:
+        back = loads(dumps(device, target, "canonical"), fmt=target, node_id=5)
+        said = losses(device, back, target)
+        for line in said:
+            table[(source, target, line.split(" is ")[0].split(" are ")[0])] += 1
+        missing = unsaid(content, back.content(), said)
+        if missing:
+            problems.append(f"{path.name} → {target}: {missing} lost without a word")
+    record_property("losses", "; ".join(f"{s}→{t}: {what} ({n} files)" for (s, t, what), n in sorted(table.items())))
+    assert not problems, "\n".join(problems[:10])
+    assert not [key for key in table if key[1] in ("eds", "dcf") and key[2] == "[Comments]"]  # INI keeps them
+    if path.name == "cia402_drive.eds":
+        assert table[("eds", "xdd", "[Comments]")] == 1 and table[("eds", "xdc", "[Comments]")] == 1
+
+
+def test_convert_says_what_xdd_cannot_hold(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    data = (EXAMPLES / "cia402_drive.eds").read_bytes()
+    dcf = data + b"\n[DeviceComissioning]\nNodeID=5\nBaudrate=500\n"
+    (tmp_path / "drive.dcf").write_bytes(dcf)
+    result = CliRunner().invoke(main, ["convert", "drive.dcf", "-o", "drive.xdd"])
+    assert result.exit_code == 0, result.output
+    assert "drive.dcf: warning: [DeviceComissioning] (node-ID, bit rate, node name) is not kept in XDD" in result.output
+    assert "(XDC and DCF keep it)" in result.output
+    assert "drive.dcf: warning: [Comments] is not kept in XDD (EDS and DCF keep it)" in result.output
+    same = CliRunner().invoke(main, ["convert", "drive.dcf", "-o", "copy.dcf"])
+    assert same.exit_code == 0 and "warning" not in same.output

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import sys
-from pathlib import Path
 
 import click
 
@@ -22,6 +21,7 @@ def prepare_canopennode(device: Device, file: str, explain: bool) -> list[str]:
     from ..lint.canopennode import profile_findings
     from ..lint.runner import has_errors
     from ..views.canopennode import build_node_view
+    from .batch import config_path
 
     path = override_file_for(file)
     applied: list[str] = []
@@ -32,7 +32,7 @@ def prepare_canopennode(device: Device, file: str, explain: bool) -> list[str]:
             click.echo(f"{path}: error: {getattr(error, 'strerror', None) or error}", err=True)
             sys.exit(EXIT_USAGE)
     try:  # the project's [tool.cantools-od] ignore applies, e.g. for a stack built without EM history
-        ignore = load_selection(Path.cwd()).ignore
+        ignore = load_selection(config_path(file, None)).ignore
     except ValueError as error:
         click.echo(f"error: configuration: {error}", err=True)
         sys.exit(EXIT_USAGE)

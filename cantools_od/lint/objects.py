@@ -282,7 +282,8 @@ def sub0_value(ctx: Context) -> Iterator[Finding]:
         highest = _highest(obj)
         if isinstance(sub0.default, int) and not isinstance(sub0.default, bool) and sub0.default < highest:
             message = f"[{obj.index:04X}sub0]: DefaultValue={sub0.default} but sub-index {highest} exists"
-            fix = Fix(f"set DefaultValue={highest}", True, _fix_sub0(obj.index))
+            # Unsafe: the value every reader reads changes, and a vendor's sub0 may count entries.
+            fix = Fix(f"set DefaultValue={highest}", False, _fix_sub0(obj.index))
             yield ctx.report("EDS026", message, ctx.value_at(sub0, "DefaultValue"), fix)
 
 

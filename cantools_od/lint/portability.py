@@ -486,7 +486,9 @@ found there, and the tool silently takes a default (no PDOs, no baud rate). lely
 
 Warning: the file is right by CiA 306; one peer misreads it. Names that no peer finds (blanks,
 other letters) are EDS091.
-Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.""",
+Fix: the name is written as CiA 306 spells it; the rest of the line stays. Safe for a name
+python-canopen does not look up; unsafe (`--unsafe-fixes`) for one it does (it then reads a value
+it did not read before).""",
     ("[DeviceInfo]\nNrOfRxPDO=0"),
     fixed=("[DeviceInfo]\nNrOfRXPDO=0"),
 )

@@ -269,7 +269,8 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
         for subindex, var in _entries(obj):
             value = var.parameter_value if var.parameter_value is not None else var.default
             dtype = ctx.device.entry_type(var, obj)
-            bad = isinstance(value, RawValue)
+            # DefaultValue=0 on a DOMAIN is CANopenNode's own spelling of "empty" (EDS030 says so): the stack stores it
+            bad = isinstance(value, RawValue) and not (_domain(dtype) and value.text.strip() == "0")
             if dtype is not None and dtype.index == REAL32.index and isinstance(value, (int, float)):
                 bad = math.isfinite(value) and abs(value) > 3.4028234663852886e38
             if bad:
@@ -342,3 +343,7 @@ def profile_findings(device: Device, node_id: int | None = None, ignore: tuple[s
     from .runner import lint
 
     return lint(device, LintOptions(node_id=node_id, profile=PROFILE), Selection(select=("CNO",), ignore=ignore))
+
+
+def _domain(dtype: object) -> bool:
+    return getattr(dtype, "index", None) == DOMAIN.index

@@ -13,6 +13,7 @@ PDO064), and sub-index 0 of every ARRAY and RECORD by EDS025; these rules leave 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from dataclasses import replace
 
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable, standard_type
 from ..model.cia301 import cia402, definitions
@@ -21,6 +22,7 @@ from ..model.cia301.objects import COMMUNICATION_AREA, DEVICE_TYPE
 from ..model.cia301.pdo import PDO_AREA
 from ..model.cia301.slots import as_int
 from . import examples as ex
+from .common import kind_unknown
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -44,8 +46,8 @@ def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
     """Every object the file writes that a standard defines, with its definition."""
     drive = is_drive(device)
     for index, obj in device.objects.items():
-        if obj.implicit or index in _PDO_RECORDS:
-            continue
+        if obj.implicit or index in _PDO_RECORDS or kind_unknown(obj):
+            continue  # an unreadable ObjectType (EDS030) already explains the object
         if index in COMMUNICATION_AREA:
             found = definitions.definition(index)
         elif drive and index in cia402.AREA:
@@ -182,6 +184,22 @@ def data_type(ctx: Context) -> Iterator[Finding]:
             )
             fix = Fix(f"set DataType=0x{entry.data_type:04X}", False, _set_type(obj.index, subindex, entry.data_type))
             yield ctx.report("STD003", message, ctx.value_at(section, key), fix)
+        yield from _vendor_entries(ctx, obj, found)
+
+
+def _vendor_entries(ctx: Context, obj: Object, found: Definition) -> Iterator[Finding]:
+    """Sub-indices a vendor added to a profile ARRAY beyond the ones the profile defines: the profile gives them
+    no type, so the finding says only that (a warning), never a type."""
+    if found.clause != cia402.CLAUSE or found.rest is None or not same_layout(obj, found):
+        return
+    for subindex, sub in obj.subs.items():
+        if subindex == 0 or found.entry(subindex) is not None or sub.implicit:
+            continue
+        message = (
+            f"{_label(obj, subindex, sub)}: sub-index {subindex} of {obj.index:04X}h {found.name} is not defined by "
+            f"{found.clause} (a vendor's extension; its data type is the vendor's)"
+        )
+        yield replace(ctx.report("STD003", message, ctx.at(sub)), severity=W)
 
 
 def _set_type(index: int, subindex: int, wanted: int) -> Callable[[Device], None]:

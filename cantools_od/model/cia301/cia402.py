@@ -38,7 +38,10 @@ def _var(index: int, name: str, data_type: int) -> Definition:
 
 
 def _array(index: int, name: str, data_type: int) -> Definition:
-    return array(index, name, Entry(name, data_type, None, _O), count_entry("Highest sub-index supported", RO), CLAUSE)
+    # Every ARRAY of the profile has two elements (a range's ends, a ratio's two numbers, two homing speeds):
+    # a further sub-index is the vendor's, of the vendor's type.
+    count = count_entry("Highest sub-index supported", RO)
+    return array(index, name, Entry(name, data_type, None, _O), count, CLAUSE, until=2)
 
 
 DEFINITIONS: tuple[Definition, ...] = (

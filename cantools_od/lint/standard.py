@@ -37,21 +37,37 @@ def _type_name(data_type: int | None) -> str:
 
 def is_drive(device: Device) -> bool:
     """1000h names device profile 402 (the drive profile) in its low 16 bits."""
-    obj = device.objects.get(DEVICE_TYPE)
+    return _profile(device, DEVICE_TYPE) == cia402.PROFILE
+
+
+def _profile(device: Device, index: int) -> int | None:
+    """The device profile number a device type object names, None without one."""
+    obj = device.objects.get(index)
     value = as_int(device.resolve(obj.value())) if obj is not None else None
-    return value is not None and cia402.device_profile(value) == cia402.PROFILE
+    return cia402.device_profile(value) if value is not None else None
+
+
+def _drives(device: Device) -> set[int]:
+    """The logical devices (0: the first) that are drives: the first by 1000h or 67FFh, a further one by its own
+    device type object (6FFFh, 77FFh, ...)."""
+    found = {0} if is_drive(device) else set()
+    for logical in range(cia402.LOGICAL_DEVICES):
+        if _profile(device, cia402.device_type_object(logical)) == cia402.PROFILE:
+            found.add(logical)
+    return found
 
 
 def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
-    """Every object the file writes that a standard defines, with its definition."""
-    drive = is_drive(device)
+    """Every object the file writes that a standard defines, with its definition (a further logical drive's
+    objects with the first one's definitions, 800h lower)."""
+    drives = _drives(device)
     for index, obj in device.objects.items():
         if obj.implicit or index in _PDO_RECORDS or kind_unknown(obj):
             continue  # an unreadable ObjectType (EDS030) already explains the object
         if index in COMMUNICATION_AREA:
             found = definitions.definition(index)
-        elif drive and index in cia402.AREA:
-            found = cia402.definition(index)
+        elif (logical := cia402.logical_device(index)) in drives and logical is not None:
+            found = cia402.definition(index - logical * cia402.LOGICAL_DEVICE_SPAN)
         else:
             continue
         if found is not None:
@@ -221,6 +237,10 @@ CiA 301 §7.5.2 gives the access of each standard entry: 1000h and 1018h are rea
 const), 1024h is write-only, the heartbeat and COB-ID objects are rw or, where the device fixes
 them, ro/const. A master that follows the file writes where the device refuses, or does not write
 what the standard says it may (a consumer heartbeat time, an error history clear through 1003h sub 0).
+For a drive (CiA 402-2, in each logical device whose device type names profile 402): what the drive
+reports is read-only (6041h statusword, 6064h position actual value, 6077h torque actual value),
+what the master commands is read-write (6040h controlword, 6060h modes of operation), and no
+parameter is write-only.
 
 Warning: communication works, but configuration steps fail or are skipped.""",
     "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"

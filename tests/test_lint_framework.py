@@ -117,8 +117,11 @@ def test_nodeid_spelling_fix_touches_only_its_line(tmp_path: Path) -> None:
     before = run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--format", "json")
     findings = json.loads(before.stdout)  # two: $NODEID placed last, and in lower case
     assert len(findings) == 2
-    assert all(f["fix"] == {"message": "write $NODEID+0x80", "safe": True} for f in findings)
+    # unsafe: python-canopen reads no default from the old spelling and one from the new
+    assert all(f["fix"] == {"message": "write $NODEID+0x80", "safe": False} for f in findings)
     assert run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--fix").returncode == 0
+    assert target.read_bytes() == source.encode()
+    assert run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--fix", "--unsafe-fixes").returncode == 0
     assert target.read_bytes() == source.replace("0x80+$nodeid", "$NODEID+0x80").encode()
     assert json.loads(run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--format", "json").stdout) == []
 
@@ -131,7 +134,10 @@ def test_count_fix_rewrites_only_the_count_lines(tmp_path: Path) -> None:
     target = tmp_path / "counts.eds"
     target.write_bytes(source.encode())
     found = json.loads(run_lint(tmp_path, "counts.eds", "--select", "EDS104", "--format", "json").stdout)
-    assert [(f["line"], f["column"], f["fix"]["safe"]) for f in found] == [(8, 1, True), (11, 1, True)]
-    assert run_lint(tmp_path, "counts.eds", "--select", "EDS104", "--fix").returncode == 0
+    # NrOfEntries: unsafe, python-canopen reads as many names as it says; no peer reads ObjectLinks
+    assert [(f["line"], f["column"], f["fix"]["safe"]) for f in found] == [(8, 1, False), (11, 1, True)]
+    assert run_lint(tmp_path, "counts.eds", "--select", "EDS104", "--fix").returncode == 1
+    assert target.read_bytes() == source.replace("ObjectLinks=3", "ObjectLinks=1").encode()
+    assert run_lint(tmp_path, "counts.eds", "--select", "EDS104", "--fix", "--unsafe-fixes").returncode == 0
     expected = source.replace("NrOfEntries=5", "NrOfEntries=1").replace("ObjectLinks=3", "ObjectLinks=1")
     assert target.read_bytes() == expected.encode()

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import sys
-from pathlib import Path
 
 import click
 
@@ -45,6 +44,7 @@ def prepare_canopennode(device: Device, file: str, explain: bool, stack_files: t
     from ..lint.canopennode import profile_findings
     from ..lint.runner import has_errors
     from ..views.canopennode import build_node_view, keep_editor_pdo_bits
+    from .batch import config_path
 
     path = override_file_for(file)
     stack = load_stack_config(file, stack_files)
@@ -58,7 +58,7 @@ def prepare_canopennode(device: Device, file: str, explain: bool, stack_files: t
     if stack.editor_pdo:
         applied += keep_editor_pdo_bits(device)
     try:  # the project's [tool.cantools-od] ignore applies, e.g. for a stack built without EM history
-        ignore = load_selection(Path.cwd()).ignore
+        ignore = load_selection(config_path(file, None)).ignore
     except ValueError as error:
         click.echo(f"error: configuration: {error}", err=True)
         sys.exit(EXIT_USAGE)

@@ -4,12 +4,17 @@ from __future__ import annotations
 
 import difflib
 import sys
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
-from ..model import Severity
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, errors_to_fix, read_device, report, write_outputs
+from .batch import config_option, config_path, jobs_option, run_each
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
+
+if TYPE_CHECKING:
+    from ..eds.format import IntStyle
 
 RADIXES = ("canonical", "as-written", "hex", "decimal")
 
@@ -23,71 +28,117 @@ RADIXES = ("canonical", "as-written", "hex", "decimal")
     type=click.Choice(RADIXES),
     help="How integers are spelled; replaces integer-radix of [tool.cantools-od] (default: canonical).",
 )
-def command(files: tuple[str, ...], check: bool, show_diff: bool, radix: str | None) -> None:
+@config_option
+@jobs_option
+def command(
+    files: tuple[str, ...], check: bool, show_diff: bool, radix: str | None, config: str | None, jobs: int | None
+) -> None:
     """Rewrite FILES in canonical form (CiA 306 key order and spelling, sorted
     sections, integers by the radix style, LF line ends), spelled so that every
     peer reader reads what the original said. A file is written only when its
-    content changes, and never when it has errors (exit 1)."""
-    from ..api import dumps, format_for
-    from ..eds.decode import mixed_encoding
+    content changes, and never when it has errors (exit 1). A file that cannot
+    be read is reported (exit 2) and every other file still formatted."""
     from ..lint.config import load_int_style
 
-    try:
-        int_style = load_int_style(Path.cwd(), radix)
-    except ValueError as error:
-        click.echo(f"error: configuration: {error}", err=True)
-        sys.exit(EXIT_USAGE)
-
-    changed = refused = 0
-    progress = Progress("fmt", len(files))
+    tasks = []
     for name in files:
-        progress.step(name)
-        device = read_device(name)
-        progress.clear()
-        report(device.diagnostics, minimum=Severity.ERROR)
-        problems = errors_to_fix(device)
-        if problems:
-            # The canonical form of a file the reader could not fully make sense of could drop
-            # what it did not understand: such a file is left as it is.
-            click.echo(f"{name}: error: not formatted: {problems}", err=True)
-            refused += 1
-            continue
-        path = Path(name)
-        original = path.read_bytes()
-        mixed = mixed_encoding(original)
-        if mixed is not None:  # read as Windows-1252, its UTF-8 letters are mojibake: never save that
-            click.echo(f"{name}: error: not formatted: {mixed}; save it as UTF-8 first", err=True)
-            refused += 1
-            continue
-        formatted = dumps(device, format_for(path), style="canonical", int_style=int_style)
-        if formatted == original:
-            continue
-        changed += 1
-        if show_diff:
-            _show_diff(name, original, formatted)
-        if check or show_diff:
-            click.echo(f"would reformat {name}", err=True)
-        else:
-            write_outputs({path: formatted})
-            click.echo(f"reformatted {name}", err=True)
-    sys.exit(EXIT_FINDINGS if refused or (changed and (check or show_diff)) else EXIT_OK)
+        try:
+            tasks.append(_Task(name, load_int_style(config_path(name, config), radix), check or show_diff, show_diff))
+        except ValueError as error:
+            click.echo(f"error: configuration: {error}", err=True)
+            sys.exit(EXIT_USAGE)
+    worst = EXIT_OK
+    progress = Progress("fmt", len(tasks)) if len(tasks) > 1 else None
+    for done in run_each(_format, tasks, jobs, progress):
+        sys.stdout.write(done.out)
+        sys.stdout.flush()
+        for line in done.err:
+            click.echo(line, err=True)
+        worst = max(worst, done.status)
+    sys.exit(worst)
 
 
-def _show_diff(name: str, original: bytes, formatted: bytes) -> None:
+@dataclass(frozen=True)
+class _Task:
+    name: str
+    int_style: IntStyle
+    dry: bool  # --check or --diff: write nothing
+    show_diff: bool
+
+
+@dataclass
+class _Done:
+    status: int = EXIT_OK
+    out: str = ""
+    err: list[str] = field(default_factory=list)
+
+
+def _format(task: _Task) -> _Done:
+    """One file (in a worker process): its diagnostics, diff and verdict as text, the file written when due."""
+    from ..api import dumps, format_for, load
+    from ..eds.decode import mixed_encoding
+    from ..files import CannotWrite, write_all
+    from ..model import Severity
+    from ..model.source import capped
+    from ..sniff import NotADeviceDescription
+    from .common import errors_to_fix
+
+    name = task.name
+    try:
+        device = load(name)
+    except OSError as error:
+        return _Done(EXIT_USAGE, err=[f"{name}: error: cannot read: {error.strerror or error}"])
+    except NotADeviceDescription as error:
+        return _Done(EXIT_USAGE, err=[f"{name}: error: {error} [{error.code}]"])
+    shown, notes = capped([d for d in device.diagnostics if d.severity is Severity.ERROR])
+    done = _Done(err=[d.format() for d in shown] + notes)
+    problems = errors_to_fix(device)
+    if problems:
+        # The canonical form of a file the reader could not fully make sense of could drop
+        # what it did not understand: such a file is left as it is.
+        done.err.append(f"{name}: error: not formatted: {problems}")
+        done.status = EXIT_FINDINGS
+        return done
+    path = Path(name)
+    original = path.read_bytes()
+    mixed = mixed_encoding(original)
+    if mixed is not None:  # read as Windows-1252, its UTF-8 letters are mojibake: never save that
+        done.err.append(f"{name}: error: not formatted: {mixed}; save it as UTF-8 first")
+        done.status = EXIT_FINDINGS
+        return done
+    formatted = dumps(device, format_for(path), style="canonical", int_style=task.int_style)
+    if formatted == original:
+        return done
+    if task.show_diff:
+        done.out = _diff(name, original, formatted, done.err)
+    if task.dry:
+        done.err.append(f"would reformat {name}")
+        done.status = EXIT_FINDINGS
+        return done
+    try:
+        write_all([(path, formatted)])
+    except CannotWrite as error:
+        done.err.append(f"error: {error}")
+        done.status = EXIT_USAGE
+        return done
+    done.err.append(f"reformatted {name}")
+    return done
+
+
+def _diff(name: str, original: bytes, formatted: bytes, notes: list[str]) -> str:
     """A unified diff of the lines' text; a change of line ends alone is one note, not every line twice."""
     before = original.decode("utf-8", "replace")
     after = formatted.decode("utf-8")
     old_ends = {_ending(line) for line in before.splitlines(keepends=True)} - {"", "LF"}
     if old_ends:
-        click.echo(f"{name}: note: line ends {'/'.join(sorted(old_ends))} become LF", err=True)
-    sys.stdout.writelines(
-        difflib.unified_diff(
-            [line + "\n" for line in before.splitlines()],
-            [line + "\n" for line in after.splitlines()],
-            fromfile=name,
-            tofile=name,
-        )
+        notes.append(f"{name}: note: line ends {'/'.join(sorted(old_ends))} become LF")
+    lines = difflib.unified_diff(
+        [line + "\n" for line in before.splitlines()],
+        [line + "\n" for line in after.splitlines()],
+        fromfile=name,
+        tofile=name,
     )
+    return "".join(lines)
 
 
 def _ending(line: str) -> str:

@@ -4,18 +4,19 @@ from __future__ import annotations
 
 import sys
 from collections import Counter
-from dataclasses import replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
+from .batch import config_option, config_path, jobs_option, run_each
 from .canopennode import load_stack_config, stack_config_option
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, read_device, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
 
 if TYPE_CHECKING:
-    from ..lint import Finding
-    from ..lint.config import Selection
+    from ..lint import Finding, LintOptions, Selection
+    from ..model import Device
 
 
 def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
@@ -34,6 +35,9 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
     "--ignore", multiple=True, help="Skip these codes, code prefixes, rule names or families (comma-separated)."
 )
 @click.option("--fix", is_flag=True, help="Apply safe fixes in place; only the touched lines change.")
+@click.option(
+    "--unsafe-fixes", is_flag=True, help="With --fix, also apply the fixes that change what a peer reads (shown)."
+)
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
 @click.option("--node-id", type=click.IntRange(1, 127), help="Node-ID that $NODEID stands for.")
 @click.option(
@@ -45,69 +49,172 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
     "--profile", type=click.Choice(["canopennode"]), help="Also apply a target's rules (canopennode: the CNO codes)."
 )
 @stack_config_option
+@config_option
+@jobs_option
 def command(
     files: tuple[str, ...],
     fmt: str,
     select: tuple[str, ...],
     ignore: tuple[str, ...],
     fix: bool,
+    unsafe_fixes: bool,
     can_fd: bool,
     node_id: int | None,
     network: bool,
     defines: tuple[str, ...],
     profile: str | None,
     stack_files: tuple[str, ...],
+    config: str | None,
+    jobs: int | None,
 ) -> None:
-    """Check EDS/DCF/XDD/XDC FILES. Exit 0 without errors, 1 with errors, 2 on usage errors."""
-    from ..api import dumps, format_for
-    from ..lint import LintOptions, has_errors, lint, load_selection
+    """Check EDS/DCF/XDD/XDC FILES. Exit 0 without errors, 1 with errors, 2 on usage errors or when a file cannot be
+    read (every other file is still checked and reported)."""
+    from ..lint import LintOptions
     from ..lint.config import check_selectors
     from ..names import UnknownName
 
-    try:
-        selection = load_selection(Path.cwd())
-    except ValueError as error:
-        click.echo(f"error: configuration: {error}", err=True)
-        sys.exit(EXIT_USAGE)
     try:
         check_selectors(_codes(select) + _codes(ignore))
     except UnknownName as error:
         click.echo(f"error: --select/--ignore: {error}", err=True)
         sys.exit(EXIT_USAGE)
-    selection = selection.merged(_codes(select), _codes(ignore))
     options = LintOptions(can_fd=can_fd, node_id=node_id, profile=profile)
-    findings: list[Finding] = []
-    devices = []
+    fixing = 2 if fix and unsafe_fixes else int(fix)
     buses = [name for name in files if Path(name).suffix.lower() in BUS_SUFFIXES]
     if buses and not network:
         click.echo(f"{buses[0]}: error: a bus description is checked as a network: add --network", err=True)
         sys.exit(EXIT_USAGE)
+    findings: list[Finding] = []
     for bus in buses:
-        findings.extend(_bus_findings(bus, defines, selection))
-    devices_files = [name for name in files if name not in buses]
-    for name in Progress("lint", len(devices_files)).over(devices_files) if len(devices_files) > 1 else devices_files:
-        device = read_device(name, node_id)
-        if profile == "canopennode":  # the configuration each project declares beside its file
-            options = replace(options, stack=load_stack_config(name, stack_files))
-        result = lint(device, options, selection)
-        if fix and any(f.fix is not None and f.fix.safe for f in result):
-            fixed = Counter(f.code for f in result if f.fix is not None and f.fix.safe)
-            for finding in result:
-                if finding.fix is not None and finding.fix.safe:
-                    finding.fix.apply(device)
-            write_outputs({Path(name): dumps(device, format_for(Path(name)))})
-            said = ", ".join(f"{code} ({count})" if count > 1 else code for code, count in sorted(fixed.items()))
-            click.echo(f"{name}: fixed {said}", err=True)
-            device = read_device(name, node_id)
-            result = lint(device, options, selection)
-        devices.append(device)
-        findings.extend(result)
-    if network and devices:
+        findings.extend(_bus_findings(bus, defines, _selection(bus, config, select, ignore)))
+    tasks = [
+        _Task(name, _options_for(name, options, stack_files), _selection(name, config, select, ignore), fixing, network)
+        for name in files
+        if name not in buses
+    ]
+    progress = Progress("lint", len(tasks)) if len(tasks) > 1 else None
+    checked = run_each(_check, tasks, 1 if network else jobs, progress)
+    findings += [finding for one in checked for finding in one.findings]
+    for one in checked:
+        if one.message:
+            click.echo(one.message, err=True)
+    if network and tasks:
         from ..lint.runner import lint_network
 
-        findings.extend(lint_network(devices, options, selection))
+        devices = [one.device for one in checked if one.device is not None]
+        findings.extend(lint_network(devices, options, tasks[0].selection))
+    from ..lint import has_errors
+
     click.echo(_render(fmt, findings, len(files)), nl=False)
-    sys.exit(EXIT_FINDINGS if has_errors(findings) else EXIT_OK)
+    worst = max((one.status for one in checked), default=EXIT_OK)
+    sys.exit(max(worst, EXIT_FINDINGS if has_errors(findings) else EXIT_OK))
+
+
+def _options_for(name: str, options: LintOptions, stack_files: tuple[str, ...]) -> LintOptions:
+    """The canopennode profile follows the build configuration each project declares beside its file."""
+    if options.profile != "canopennode":
+        return options
+    return replace(options, stack=load_stack_config(name, stack_files))
+
+
+def _selection(name: str, config: str | None, select: tuple[str, ...], ignore: tuple[str, ...]) -> Selection:
+    """The selection for one file: its configuration (exit 2 when malformed) and the command line's choices."""
+    from ..lint import load_selection
+
+    try:
+        selection = load_selection(config_path(name or ".", config))
+    except ValueError as error:
+        click.echo(f"error: configuration: {error}", err=True)
+        sys.exit(EXIT_USAGE)
+    return selection.merged(_codes(select), _codes(ignore))
+
+
+@dataclass(frozen=True)
+class _Task:
+    name: str
+    options: LintOptions
+    selection: Selection
+    fixing: int  # 0: no fix, 1: safe fixes, 2: safe and unsafe fixes
+    keep: bool  # return the device (for --network)
+
+
+@dataclass
+class _Checked:
+    findings: list[Finding] = field(default_factory=list)
+    status: int = EXIT_OK  # EXIT_USAGE when the file could not be read or written
+    message: str = ""  # a line for stderr
+    device: Device | None = None
+
+
+def _check(task: _Task) -> _Checked:
+    """One file: read, lint, fix (written at once), lint again. Runs in a worker process: what it returns
+    holds no function, so it can travel back."""
+    from ..api import load
+    from ..lint import lint
+    from ..sniff import NotADeviceDescription
+
+    try:
+        device = load(task.name, node_id=task.options.node_id)
+    except OSError as error:
+        return _Checked(status=EXIT_USAGE, message=f"{task.name}: error: cannot read: {error.strerror or error}")
+    except NotADeviceDescription as error:
+        return _not_a_device(task, error)
+    result = lint(device, task.options, task.selection)
+    said = ""
+    if task.fixing and any(_applies(f, task.fixing) for f in result):
+        failure = _fix(task, device, result)
+        if failure:
+            return _Checked([_sent(f) for f in result], EXIT_USAGE, failure)
+        fixed = Counter(f.code for f in result if _applies(f, task.fixing))
+        said = f"{task.name}: fixed " + ", ".join(
+            f"{code} ({n})" if n > 1 else code for code, n in sorted(fixed.items())
+        )
+        device = load(task.name, node_id=task.options.node_id)
+        result = lint(device, task.options, task.selection)
+    return _Checked([_sent(f) for f in result], message=said, device=device if task.keep else None)
+
+
+def _not_a_device(task: _Task, error: Exception) -> _Checked:
+    """A file that is no device description: an EDS000 finding like any other (exit 2 unless ignored)."""
+    from ..lint.rules import RULES, Finding
+    from ..model import Location
+
+    code = getattr(error, "code", "EDS000")
+    if not task.selection.enabled(code, task.name):
+        return _Checked()
+    finding = Finding(code, RULES[code].severity, str(error), Location(file=task.name, line=1, column=1))
+    return _Checked([finding], EXIT_USAGE)
+
+
+def _applies(finding: Finding, fixing: int) -> bool:
+    return finding.fix is not None and (finding.fix.safe or fixing > 1)
+
+
+def _fix(task: _Task, device: Device, result: list[Finding]) -> str:
+    """Apply the fixes chosen and write the file; the reason when it cannot be written."""
+    from ..api import dumps, format_for
+    from ..files import CannotWrite, write_all
+
+    for finding in result:
+        if finding.fix is not None and _applies(finding, task.fixing):
+            finding.fix.apply(device)
+    path = Path(task.name)
+    try:
+        write_all([(path, dumps(device, format_for(path)))])
+    except CannotWrite as error:
+        return f"error: {error}"
+    return ""
+
+
+def _sent(finding: Finding) -> Finding:
+    """The finding without its fix's function (which cannot leave the process), its message and safety kept."""
+    if finding.fix is None:
+        return finding
+    return replace(finding, fix=replace(finding.fix, apply=_applied))
+
+
+def _applied(device: Device) -> None:
+    """A fix that was already applied, or not chosen: nothing left to do."""
 
 
 BUS_SUFFIXES = (".yml", ".yaml")

@@ -88,7 +88,7 @@ def preserve(device: Device) -> bytes:
     parsed: ini.IniFile | None = None
     if device._recount:
         parsed = ini.parse(text)
-        _written_counts(parsed, before)
+        _written_counts(parsed, before, device._recount)
     if _entries(before) == _entries(after):
         return original  # the common case: no second parse of the text
     parsed = parsed or ini.parse(text)
@@ -120,15 +120,15 @@ def _in_style_of(old: str, new: str) -> str:
 _COUNT_KEYS = {"NrOfEntries", "ObjectLinks"}
 
 
-def _written_counts(parsed: ini.IniFile, before: dict[str, OutSection]) -> None:
-    """Put the counts of [xxxxName/Value/Denotation/ObjectLinks] as written in place of the derived ones,
-    so that a wrong count differs from the device's and is rewritten."""
+def _written_counts(parsed: ini.IniFile, before: dict[str, OutSection], recount: set[str]) -> None:
+    """Put the counts of [xxxxName/Value/Denotation/ObjectLinks] named in `recount` as written in place of the
+    derived ones, so that a wrong count differs from the device's and is rewritten."""
     for section in parsed.sections:
         old = before.get(canonical_section_name(section.name))
         if old is None:
             continue
         for entry in section.entries:
-            key = next((k for k in _COUNT_KEYS if k.lower() == normalize(entry.key)), None)
+            key = next((k for k in _COUNT_KEYS & recount if k.lower() == normalize(entry.key)), None)
             if key is not None and key in old.entries:
                 old.entries[key] = entry.value
 

@@ -219,6 +219,9 @@ NAMES: dict[str, dict[str, str]] = {
         "DIA016": "obj-flags-set",
         "DIA017": "comment-character-in-text",
         "DIA018": "key-spelling",
+        "DIA019": "empty-device-info-number",
+        "DIA020": "octal-device-info-number",
+        "DIA021": "comments-key-case",
     },
     "import": {
         "IMP001": "source-unreadable",

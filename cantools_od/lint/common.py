@@ -49,3 +49,9 @@ def explicit_vars(device: Device) -> Iterator[tuple[Object, int | None, Variable
 
 def where(obj: Object, subindex: int | None) -> str:
     return f"[{obj.index:04X}]" if subindex is None else f"[{obj.index:04X}sub{subindex:X}]"
+
+
+def kind_unknown(obj: Object) -> bool:
+    """The object's ObjectType was written but could not be read (EDS030): its kind in the model is a guess, so
+    rules that judge what its kind requires say nothing (one root cause, one error)."""
+    return invalid(obj, "ObjectType")

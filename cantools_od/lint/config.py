@@ -1,4 +1,5 @@
-"""Lint configuration: `[tool.cantools-od]` in pyproject.toml and command-line selections.
+"""Lint configuration: `[tool.cantools-od]` in pyproject.toml (or a cantools-od.toml), found per file, and
+command-line selections.
 
 [tool.cantools-od]
 select = ["EDS", "PDO", "cobid"]   # codes, code prefixes or family names; default: every rule
@@ -66,39 +67,69 @@ class Selection:
         return Selection(select or self.select, self.ignore + ignore, self.per_file_ignores, self.root)
 
 
-def find_pyproject(start: Path) -> Path | None:
+CONFIG_NAME = "cantools-od.toml"
+"""A configuration file of its own: the keys of `[tool.cantools-od]` at its top level."""
+
+
+def find_config(start: Path) -> Path | None:
+    """The configuration that holds for files in folder `start`, found as ruff finds its own: from `start` upwards,
+    the first folder with a pyproject.toml that has a `[tool.cantools-od]` table, or else a cantools-od.toml."""
     for folder in [start, *start.parents]:
-        candidate = folder / "pyproject.toml"
-        if candidate.is_file():
-            return candidate
+        pyproject = folder / "pyproject.toml"
+        if pyproject.is_file() and _has_table(pyproject):
+            return pyproject
+        own = folder / CONFIG_NAME
+        if own.is_file():
+            return own
     return None
 
 
-def _table(start: Path) -> tuple[Path | None, dict[str, Any]]:
-    """The nearest pyproject.toml and its `[tool.cantools-od]` table; raises ValueError when malformed."""
-    path = find_pyproject(start.resolve())
+def _has_table(pyproject: Path) -> bool:
+    """Whether a pyproject.toml has a `[tool.cantools-od]` table; a malformed one that names it is taken, so that
+    reading it reports the error."""
+    try:
+        text = pyproject.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return False
+    try:
+        tool = tomllib.loads(text).get("tool")
+    except tomllib.TOMLDecodeError:
+        return "cantools-od" in text
+    return isinstance(tool, dict) and "cantools-od" in tool
+
+
+def _table(path: Path | None) -> tuple[Path | None, dict[str, Any]]:
+    """The configuration file's table (`[tool.cantools-od]` of a pyproject.toml, the whole of a cantools-od.toml);
+    raises ValueError when it is malformed or cannot be read. A folder stands for the configuration found from it
+    upwards."""
+    if path is not None and path.is_dir():
+        path = find_config(path.resolve())
     if path is None:
         return None, {}
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except OSError as error:
+        raise ValueError(f"{path}: cannot read: {error.strerror or error}") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
         raise ValueError(f"{path}: {error}") from None
-    table = data.get("tool", {}).get("cantools-od", {})
+    where = "[tool.cantools-od]" if path.name == "pyproject.toml" else "the file"
+    table = data.get("tool", {}).get("cantools-od", {}) if path.name == "pyproject.toml" else data
     if not isinstance(table, dict):
         raise ValueError(f"{path}: [tool.cantools-od] must be a table")
     try:
-        check_names("key in [tool.cantools-od]", table, KEYS)
+        check_names(f"key in {where}", table, KEYS)
     except UnknownName as error:
         raise ValueError(f"{path}: {error}") from None
     return path, table
 
 
-def load_int_style(start: Path, override: str | None = None) -> IntStyle:
-    """How `fmt` spells integers: `integer-radix` of the nearest `[tool.cantools-od]`, one radix or a table by
-    key (`"*"` for the keys not named); `override` (the command line's) replaces it. Raises ValueError."""
+def load_int_style(config: Path | None, override: str | None = None) -> IntStyle:
+    """How `fmt` spells integers: `integer-radix` of the configuration file (or folder) `config`, one radix
+    or a table by key (`"*"` for the keys not named); `override` (the command line's) replaces it. Raises
+    ValueError."""
     if override is not None:
         return IntStyle(_radix(override, "--radix"))
-    path, table = _table(start)
+    path, table = _table(config)
     value = table.get("integer-radix")
     if value is None:
         return IntStyle()
@@ -127,9 +158,10 @@ def _closest(name: str, names: tuple[str, ...]) -> str:
     return f" (did you mean {found[0]!r}?)" if found else ""
 
 
-def load_selection(start: Path) -> Selection:
-    """The `[tool.cantools-od]` table of the nearest pyproject.toml; raises ValueError when malformed."""
-    path, table = _table(start)
+def load_selection(config: Path | None) -> Selection:
+    """The selection the configuration file `config` makes (a folder: the one found from it upwards, see
+    `find_config`); raises ValueError when malformed."""
+    path, table = _table(config)
     if path is None:
         return Selection()
     return Selection(

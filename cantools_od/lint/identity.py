@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from ..eds.keys import BAUD_RATES
-from ..model import Device, Location, Severity, Value
+from ..model import Device, Location, Object, Severity, Value
 from ..model.cia301.objects import (
     IDENTITY,
     IDENTITY_PRODUCT_CODE,
@@ -59,9 +59,15 @@ def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     "[DeviceInfo] identity differs from 1018h",
     """
 VendorNumber, ProductNumber and RevisionNumber in [DeviceInfo] repeat the DefaultValue of the
-identity object 1018h sub-indices 1, 2 and 3 (CiA 306, [DeviceInfo]). Masters and configuration tools
-compare one or the other with the device; a mismatch (CANopenEditor #226: RevisionNumber=0
-while 1018h sub3 = 0x00010000) makes them reject the right device or accept the wrong one.""",
+identity object 1018h sub-indices 1, 2 and 3 (CiA 306, [DeviceInfo]); in a DCF, the ParameterValue
+of a sub-index that has one, which is the configured device's own number. Masters and
+configuration tools compare one or the other with the device; a mismatch (CANopenEditor #226:
+RevisionNumber=0 while 1018h sub3 = 0x00010000) makes them reject the right device or accept the
+wrong one.
+
+Fix: the number 1018h states is written to [DeviceInfo]. Safe from a ParameterValue; unsafe
+(`--unsafe-fixes`) from a DefaultValue, which may be a template's placeholder while [DeviceInfo]
+holds the real number: which side is right only the device tells.""",
     "[DeviceInfo]\nRevisionNumber=0\n\n[1018sub3]\nParameterName=Revision number\nDataType=0x0007\n"
     "AccessType=ro\nDefaultValue=0x00010000",
     fixed=("[DeviceInfo]\nRevisionNumber=0x3"),
@@ -71,20 +77,31 @@ def identity(ctx: Context) -> Iterator[Finding]:
     if obj is None:
         return
     for subindex, key, field in _IDENTITY:
-        sub = obj.subs.get(subindex)
-        stated, described = getattr(info, field), plain_int(sub.default) if sub is not None else None
+        stated, (described, source) = getattr(info, field), _stated_identity(obj, subindex)
         if stated is None or described is None or stated == described:
             continue
-        fix = Fix(f"set {key}=0x{described:08X} from 1018h sub{subindex}", True, _fix_identity(subindex, field))
-        message = f"{key}=0x{stated:08X} but 1018h sub{subindex} DefaultValue=0x{described:08X}"
+        # Safe only from a DCF's ParameterValue, the device's own number; a DefaultValue may be the template's.
+        safe = source == "ParameterValue"
+        fix = Fix(f"set {key}=0x{described:08X} from 1018h sub{subindex}", safe, _fix_identity(subindex, field))
+        message = f"{key}=0x{stated:08X} but 1018h sub{subindex} {source}=0x{described:08X}"
         yield ctx.report("EDS040", message, ctx.value_at(info, key), fix)
+
+
+def _stated_identity(obj: Object, subindex: int) -> tuple[int | None, str]:
+    """The identity 1018h states in a sub-index: a DCF's ParameterValue (the configured device's own number)
+    when it has one, else the DefaultValue; and the key that states it."""
+    sub = obj.subs.get(subindex)
+    if sub is None:
+        return None, ""
+    if sub.parameter_value is not None:
+        return plain_int(sub.parameter_value), "ParameterValue"
+    return plain_int(sub.default), "DefaultValue"
 
 
 def _fix_identity(subindex: int, field: str) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
         obj = device.objects.get(IDENTITY)
-        sub = obj.subs.get(subindex) if obj is not None else None
-        value = plain_int(sub.default) if sub is not None else None
+        value = _stated_identity(obj, subindex)[0] if obj is not None else None
         if value is not None:
             setattr(device.device_info, field, value)
 

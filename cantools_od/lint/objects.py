@@ -12,7 +12,7 @@ from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
 from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
 from ..model.cia301.pdo import PDO_AREA
 from ..model.datatypes import STANDARD_TYPES, STATIC_TYPE_AREA, UNSIGNED8
-from .common import explicit_objects, explicit_vars, given, where
+from .common import explicit_objects, explicit_vars, given, kind_unknown, where
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -67,8 +67,13 @@ crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def missing_keys(ctx: Context) -> Iterator[Finding]:
+    xml = ctx.device.file_format != "eds"
     for obj, subindex, var in explicit_vars(ctx.device):
+        if kind_unknown(obj):
+            continue  # which keys it needs depends on the ObjectType nobody could read (EDS030)
         for key in _mandatory(obj, subindex is not None):
+            if xml and key == "ParameterName":
+                continue  # an XDD's missing name attribute is XDD006
             if not given(var, key):
                 kind = "a sub-object" if subindex is not None else f"{obj.kind.name}"
                 empty = var.origin is not None and var.origin.where(key) is not None
@@ -96,6 +101,8 @@ as if they were absent.""",
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in explicit_vars(ctx.device):
+        if kind_unknown(obj):
+            continue  # EDS030: the ObjectType that decides which keys are allowed is unreadable
         for key in _forbidden(obj, subindex is not None):
             if _written(var, key, subindex is not None):
                 kind = "a sub-object" if subindex is not None else f"an object of type {obj.kind.name}"
@@ -282,7 +289,8 @@ def sub0_value(ctx: Context) -> Iterator[Finding]:
         highest = _highest(obj)
         if isinstance(sub0.default, int) and not isinstance(sub0.default, bool) and sub0.default < highest:
             message = f"[{obj.index:04X}sub0]: DefaultValue={sub0.default} but sub-index {highest} exists"
-            fix = Fix(f"set DefaultValue={highest}", True, _fix_sub0(obj.index))
+            # Unsafe: the value every reader reads changes, and a vendor's sub0 may count entries.
+            fix = Fix(f"set DefaultValue={highest}", False, _fix_sub0(obj.index))
             yield ctx.report("EDS026", message, ctx.value_at(sub0, "DefaultValue"), fix)
 
 

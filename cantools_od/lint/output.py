@@ -25,7 +25,7 @@ def text(findings: list[Finding], files: int) -> str:
 def _fix_note(finding: Finding) -> str:
     if finding.fix is None:
         return ""
-    kind = "fix" if finding.fix.safe else "unsafe fix, not applied by --fix"
+    kind = "fix" if finding.fix.safe else "unsafe fix, applied only with --unsafe-fixes"
     return f"\n    {kind}: {finding.fix.message}"
 
 

@@ -10,8 +10,8 @@ from ..model.cia301.pdo import MAPPING_ENTRY_TYPE, MAX_ENTRIES, RX, TX, MapEntry
 from ..model.cia301.slots import Slot
 from ..model.datatypes import BOOLEAN
 from . import examples as ex
-from .pdoread import device_pdos, dummies, length_fix, limits_fit, mapped_objects, named, with_severity
-from .rules import Context, Finding, Fix, rule
+from .pdoread import device_pdos, dummies, length_fix, mapped_objects, named, with_severity
+from .rules import Context, Finding, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -305,16 +305,16 @@ def check_direction(ctx: Context) -> Iterator[Finding]:
 The low byte of a mapping entry is the length in bits, and CiA 301 requires it to equal the
 size of the mapped object's data type (UNSIGNED16: 10h, INTEGER32: 20h). Devices check it
 (abort 0604 0041h/0604 0042h), and a receiver that trusts the entry reads the wrong bits. The
-safe fix rewrites the length byte from the type (unsafe when the object's limits do not fit
-its DataType, which is then suspect itself). A BOOLEAN mapped as 8 bits, as CANopenNode
-stores it, is only a warning with an unsafe fix: such a device expects the byte.""",
+fix rewrites the length byte from the type; it is unsafe (`--unsafe-fixes`): it moves every later
+entry in the frame, and which side is wrong (the entry or the DataType) only the device tells. A
+BOOLEAN mapped as 8 bits, as CANopenNode stores it, is only a warning: such a device expects the
+byte.""",
     ex.pdo("tx", "0x60410008") + ex.STATUSWORD,
     fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_length(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
         for entry in pdo.mapped():
-            trusted = True
             if entry.is_dummy:
                 dtype, what = dummy_type(ctx.device, entry.index), "dummy entry"
             else:
@@ -323,18 +323,15 @@ def check_length(ctx: Context) -> Iterator[Finding]:
                 if obj is None or var is None:
                     continue
                 dtype, what = ctx.device.entry_type(var, obj), named(entry, var)
-                trusted = dtype is not None and limits_fit(var, dtype)
             if dtype is None or dtype.bits is None or entry.bits == dtype.bits:
                 continue
             message = f"{pdo.name}: entry 0x{entry.raw:08X} maps {entry.bits} bits, but {what} is {dtype.name}"
             if dtype.index == BOOLEAN.index and entry.bits == 8:  # CANopenNode's byte-sized BOOLEAN
-                fix = length_fix(entry, 1)
-                unsafe = Fix(fix.message, False, fix.apply) if fix is not None else None
                 message += " (1 bit; CANopenNode devices expect the byte they store it in)"
-                yield with_severity(ctx.report("PDO045", message, entry.slot.location(ctx), unsafe), W)
+                yield with_severity(ctx.report("PDO045", message, entry.slot.location(ctx), length_fix(entry, 1)), W)
             else:
                 message += f" ({dtype.bits} bits)"
-                yield ctx.report("PDO045", message, entry.slot.location(ctx), length_fix(entry, dtype.bits, trusted))
+                yield ctx.report("PDO045", message, entry.slot.location(ctx), length_fix(entry, dtype.bits))
 
 
 @rule(

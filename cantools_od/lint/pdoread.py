@@ -11,7 +11,7 @@ import dataclasses
 from collections.abc import Callable, Iterator
 from weakref import WeakKeyDictionary
 
-from ..model import DataType, Device, Object, Severity, Variable
+from ..model import Device, Object, Severity, Variable
 from ..model.cia301.cobid import ALL_NODE_IDS, Cob, known_node_id
 from ..model.cia301.pdo import MapEntry, Pdo, pdos
 from ..model.cia301.slots import Slot, as_int
@@ -66,19 +66,14 @@ def named(entry: MapEntry, var: Variable | None) -> str:
     return f"{entry.target} ({var.name})" if var is not None and var.name else entry.target
 
 
-def length_fix(entry: MapEntry, bits: int, trusted: bool = True) -> Fix | None:
-    """Rewrite the entry's length byte.
-
-    Safe when the mapped type is `trusted` and the value is the entry's own (not the CompactSubObj
-    default that every implicit entry shares).
-    """
+def length_fix(entry: MapEntry, bits: int) -> Fix | None:
+    """Rewrite the entry's length byte. Never safe: the frame's layout changes (every later entry moves), and
+    every peer reads the new mapping value."""
     if entry.flagged:
         return None
     new = (entry.raw & ~0xFF) | bits
     index, position = entry.slot.owner.index, entry.position
     field = "parameter_value" if entry.slot.var.parameter_value is not None else "default"
-    shared = entry.slot.implicit and field == "default"
-    safe = trusted and not shared
 
     def apply(device: Device) -> None:
         obj = device.objects.get(index)
@@ -86,20 +81,9 @@ def length_fix(entry: MapEntry, bits: int, trusted: bool = True) -> Fix | None:
         if var is not None:
             setattr(var, field, new)
 
-    return Fix(f"write 0x{new:08X} (mapping entry length from the mapped type)", safe, apply)
+    return Fix(f"write 0x{new:08X} (mapping entry length from the mapped type)", False, apply)
 
 
 def with_severity(finding: Finding, severity: Severity) -> Finding:
     """A rule whose severity depends on the case reports its milder cases through this."""
     return dataclasses.replace(finding, severity=severity)
-
-
-def limits_fit(var: Variable, dtype: DataType) -> bool:
-    """Whether the variable's integer limits lie within its data type: else the DataType itself is suspect."""
-    bounds = dtype.int_range()
-    if bounds is None:
-        return True
-    for limit in (var.low_limit, var.high_limit):
-        if isinstance(limit, int) and not isinstance(limit, bool) and not bounds[0] <= limit <= bounds[1]:
-            return False
-    return True

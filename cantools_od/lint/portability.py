@@ -6,12 +6,16 @@ or rejects, so that a file meant for those tools can be adjusted.
 
 from __future__ import annotations
 
+import re
 from collections import Counter
 from collections.abc import Iterator
+from weakref import WeakKeyDictionary
 
 from ..eds import keys
+from ..eds.decode import decode_as
 from ..model import (
     Dialect,
+    Location,
     NodeIdExpr,
     ObjectKind,
     Section,
@@ -483,7 +487,9 @@ found there, and the tool silently takes a default (no PDOs, no baud rate). lely
 
 Warning: the file is right by CiA 306; one peer misreads it. Names that no peer finds (blanks,
 other letters) are EDS091.
-Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.""",
+Fix: the name is written as CiA 306 spells it; the rest of the line stays. Safe for a name
+python-canopen does not look up; unsafe (`--unsafe-fixes`) for one it does (it then reads a value
+it did not read before).""",
     ("[DeviceInfo]\nNrOfRxPDO=0"),
     fixed=("[DeviceInfo]\nNrOfRXPDO=0"),
 )
@@ -494,3 +500,111 @@ def key_spelling(ctx: Context) -> Iterator[Finding]:
             message = f"{spelling.written}: CiA 306 spells it {spelling.canonical}; "
             message += f"python-canopen reads {what} case-sensitively"
             yield ctx.report("DIA018", message, spelling.where, spelling.fix())
+
+
+# ---- what python-canopen cannot read at all in [DeviceInfo] and [Comments] --------------------------------------
+
+# The [DeviceInfo] keys python-canopen reads with `int(text, 0)` (a number, or 0/1 for a flag): an empty value or
+# one that form rejects stops it loading the file. BaudRate_<n> are read the same way.
+_INT_DEVICE_INFO = ("VendorNumber", "ProductNumber", "RevisionNumber", "NrOfRXPDO", "NrOfTXPDO", "SimpleBootUpMaster",
+                    "SimpleBootUpSlave", "Granularity", "DynamicChannelsSupported", "GroupMessaging", "LSS_Supported",
+                    *(f"BaudRate_{rate}" for rate in (10, 20, 50, 125, 250, 500, 800, 1000)))  # fmt: skip
+_OCTAL = re.compile(r"[+-]?0[0-9]*[1-9][0-9]*\Z")  # all zeros is 0 for every reader
+_COMMENT_KEY = re.compile(r"(?:lines|line[0-9]+)\Z", re.IGNORECASE)
+_COMMENT_SPELLING = re.compile(r"(?:Lines|Line[0-9]+)\Z")
+_LINES: WeakKeyDictionary[Context, list[str]] = WeakKeyDictionary()
+
+
+def _text_lines(ctx: Context) -> list[str]:
+    """The file's lines as read, once a check (only the rules on a few keys' spelling need the text itself)."""
+    if ctx not in _LINES:
+        original = ctx.device._original or b""
+        _LINES[ctx] = decode_as(original)[0].splitlines() if original else []
+    return _LINES[ctx]
+
+
+def _written(ctx: Context, section: Section, key: str) -> str | None:
+    """The value of `key` as the file writes it, None when the key is absent."""
+    where = section.origin.where(key) if section.origin is not None else None
+    lines = _text_lines(ctx)
+    if where is None or not 0 < where[0] <= len(lines):
+        return None
+    return lines[where[0] - 1][where[2] - 1 :].strip()
+
+
+@rule(
+    "DIA019",
+    W,
+    "Empty number in [DeviceInfo]",
+    """
+An empty `VendorNumber=` or `ProductNumber=` equals a missing key in CiA 306, but python-canopen
+reads every number and flag of [DeviceInfo] (the identity, the PDO counts, the boot-up and LSS
+flags, `BaudRate_<n>`) with `int()`, and an empty value stops it loading the file at all.
+
+Warning: the file is right by CiA 306; one peer cannot load it. Write the number, or delete the
+key.""",
+    "[DeviceInfo]\nVendorName=Acme\nVendorNumber=\nProductName=Widget",
+    fixed="[DeviceInfo]\nVendorName=Acme\nProductName=Widget",
+    fix_safety="No automatic fix: only the vendor knows the number; deleting the key loses nothing.",
+)
+def empty_device_info_number(ctx: Context) -> Iterator[Finding]:
+    info = ctx.device.device_info
+    for key in _INT_DEVICE_INFO:
+        if _written(ctx, info, key) == "":
+            yield ctx.report("DIA019", f"[DeviceInfo] {key} is empty; python-canopen fails to load the file",
+                             ctx.at(info, key))  # fmt: skip
+
+
+@rule(
+    "DIA020",
+    W,
+    "Octal number in [DeviceInfo]",
+    """
+CiA 306 reads an integer with a leading 0 as octal: `ProductNumber=014101` is 6209, though a
+vendor who wrote a catalogue number with a leading zero most likely meant 14101. python-canopen
+(`int(text, 0)`) and lely's tools reject the form and fail on the file, and every reader that does
+take it may take another number than its author meant.
+
+Warning: which number is meant only the author knows; write it in decimal or as 0x hex.""",
+    "[DeviceInfo]\nVendorName=Acme\nProductNumber=02",
+    fixed="[DeviceInfo]\nVendorName=Acme\nProductNumber=2",
+    fix_safety="No automatic fix: CiA 306 says 6209, the author probably meant 14101.",
+)
+def octal_device_info_number(ctx: Context) -> Iterator[Finding]:
+    info = ctx.device.device_info
+    for key in _INT_DEVICE_INFO:
+        text = _written(ctx, info, key)
+        if text is not None and _OCTAL.match(text):
+            message = (
+                f"[DeviceInfo] {key}={text}: octal by CiA 306 ({int(text, 8)}); python-canopen and lely fail on it"
+            )
+            yield ctx.report("DIA020", message, ctx.value_at(info, key))
+
+
+@rule(
+    "DIA021",
+    W,
+    "[Comments] key in another case than Lines/Line<n>",
+    """
+CiA 306 key names are case-insensitive, but python-canopen looks up `Lines` and then `Line1` ...
+`Line<Lines>` exactly as spelled here: a `line5=` (or `LINES=`) makes it fail with NoOptionError and
+load nothing at all.
+
+Warning: the file is right by CiA 306; one peer cannot load it.""",
+    "[Comments]\nLines=2\nLine1=First\nline2=Second",
+    fixed="[Comments]\nLines=2\nLine1=First\nLine2=Second",
+    fix_safety="No automatic fix: write the key as `Lines` or `Line<n>`.",
+)
+def comments_key_case(ctx: Context) -> Iterator[Finding]:
+    comments = ctx.device.comments
+    if comments is None or comments.origin is None:
+        return
+    lines = _text_lines(ctx)
+    for number in range(comments.origin.line, len(lines)):
+        line = lines[number]
+        if line.lstrip().startswith("["):
+            return
+        key = line.split("=", 1)[0].strip() if "=" in line else ""
+        if _COMMENT_KEY.match(key) and not _COMMENT_SPELLING.match(key):
+            message = f"[Comments] {key}: python-canopen looks it up as {key[:4].title()}{key[4:].lower()} and fails"
+            yield ctx.report("DIA021", message, Location(file=ctx.device.source, line=number + 1, column=1))

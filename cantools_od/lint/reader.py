@@ -168,8 +168,9 @@ decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) co
         "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=2\n\n"
         "[2000Name]\nNrOfEntries=2\n1=First\n2=Second"
     ),
-    fix_safety="Safe for a wrong NrOfEntries or ObjectLinks count: `--fix` writes the number of entries; no "
-    "automatic fix otherwise.",
+    fix_safety="Safe for a wrong ObjectLinks count (no peer reads it): `--fix` writes the number of entries. Unsafe "
+    "for a wrong NrOfEntries: python-canopen reads that many names, so the count changes what it reads (applied "
+    "by `--unsafe-fixes`). No automatic fix otherwise.",
 )
 
 
@@ -179,8 +180,10 @@ _VALUE_KEYS = {key: field for key, field, kind in OBJECT_KEYS.values() if kind i
 
 def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:
     """A fix for a finding the reader made: a wrong count (EDS104), a `$NODEID` spelling (EDS033)."""
-    if diagnostic.code == "EDS104" and ("NrOfEntries=" in diagnostic.message or "ObjectLinks=" in diagnostic.message):
-        return Fix("write the number of entries", safe=True, apply=_recount)
+    if diagnostic.code == "EDS104":
+        key = next((k for k in ("NrOfEntries", "ObjectLinks") if f"{k}=" in diagnostic.message), None)
+        # python-canopen reads as many names as NrOfEntries says: a new count changes what it reads.
+        return Fix("write the number of entries", key == "ObjectLinks", _recount(key)) if key else None
     if diagnostic.code != "EDS033":
         return None
     for _, _, var in ctx.variables():
@@ -194,7 +197,8 @@ def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:
             if value.offset < 0:
                 return None  # `$NODEID-n` has no portable spelling
             canonical = NodeIdExpr(offset=value.offset)
-            return Fix(f"write {canonical.canonical()}", safe=True, apply=_setter(var, field, canonical))
+            # Unsafe: a peer that did not read the old spelling reads a value from the new one.
+            return Fix(f"write {canonical.canonical()}", safe=False, apply=_setter(var, field, canonical))
     return None
 
 
@@ -205,5 +209,8 @@ def _setter(var: Variable, field: str, value: NodeIdExpr) -> Callable[[Device], 
     return apply
 
 
-def _recount(device: Device) -> None:
-    device._recount = True
+def _recount(key: str) -> Callable[[Device], None]:
+    def apply(device: Device) -> None:
+        device._recount.add(key)
+
+    return apply

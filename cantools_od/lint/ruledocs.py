@@ -65,7 +65,7 @@ def _failing(code: Code) -> tuple[list[str], str | None]:
     safety = None
     if fixes:
         safe = all(is_safe for _, is_safe in fixes)
-        safety = ("Safe: `--fix` applies it" if safe else "Unsafe: shown, never applied by `--fix`") + (
+        safety = ("Safe: `--fix` applies it" if safe else "Unsafe: shown; applied only by `--fix --unsafe-fixes`") + (
             f" ({'; '.join(sorted(message for message, _ in fixes))})."
         )
     return out, safety

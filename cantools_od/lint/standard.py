@@ -13,6 +13,7 @@ PDO064), and sub-index 0 of every ARRAY and RECORD by EDS025; these rules leave 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from dataclasses import replace
 
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable, standard_type
 from ..model.cia301 import cia402, definitions
@@ -21,6 +22,7 @@ from ..model.cia301.objects import COMMUNICATION_AREA, DEVICE_TYPE
 from ..model.cia301.pdo import PDO_AREA
 from ..model.cia301.slots import as_int
 from . import examples as ex
+from .common import kind_unknown
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -35,21 +37,37 @@ def _type_name(data_type: int | None) -> str:
 
 def is_drive(device: Device) -> bool:
     """1000h names device profile 402 (the drive profile) in its low 16 bits."""
-    obj = device.objects.get(DEVICE_TYPE)
+    return _profile(device, DEVICE_TYPE) == cia402.PROFILE
+
+
+def _profile(device: Device, index: int) -> int | None:
+    """The device profile number a device type object names, None without one."""
+    obj = device.objects.get(index)
     value = as_int(device.resolve(obj.value())) if obj is not None else None
-    return value is not None and cia402.device_profile(value) == cia402.PROFILE
+    return cia402.device_profile(value) if value is not None else None
+
+
+def _drives(device: Device) -> set[int]:
+    """The logical devices (0: the first) that are drives: the first by 1000h or 67FFh, a further one by its own
+    device type object (6FFFh, 77FFh, ...)."""
+    found = {0} if is_drive(device) else set()
+    for logical in range(cia402.LOGICAL_DEVICES):
+        if _profile(device, cia402.device_type_object(logical)) == cia402.PROFILE:
+            found.add(logical)
+    return found
 
 
 def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
-    """Every object the file writes that a standard defines, with its definition."""
-    drive = is_drive(device)
+    """Every object the file writes that a standard defines, with its definition (a further logical drive's
+    objects with the first one's definitions, 800h lower)."""
+    drives = _drives(device)
     for index, obj in device.objects.items():
-        if obj.implicit or index in _PDO_RECORDS:
-            continue
+        if obj.implicit or index in _PDO_RECORDS or kind_unknown(obj):
+            continue  # an unreadable ObjectType (EDS030) already explains the object
         if index in COMMUNICATION_AREA:
             found = definitions.definition(index)
-        elif drive and index in cia402.AREA:
-            found = cia402.definition(index)
+        elif (logical := cia402.logical_device(index)) in drives and logical is not None:
+            found = cia402.definition(index - logical * cia402.LOGICAL_DEVICE_SPAN)
         else:
             continue
         if found is not None:
@@ -182,6 +200,22 @@ def data_type(ctx: Context) -> Iterator[Finding]:
             )
             fix = Fix(f"set DataType=0x{entry.data_type:04X}", False, _set_type(obj.index, subindex, entry.data_type))
             yield ctx.report("STD003", message, ctx.value_at(section, key), fix)
+        yield from _vendor_entries(ctx, obj, found)
+
+
+def _vendor_entries(ctx: Context, obj: Object, found: Definition) -> Iterator[Finding]:
+    """Sub-indices a vendor added to a profile ARRAY beyond the ones the profile defines: the profile gives them
+    no type, so the finding says only that (a warning), never a type."""
+    if found.clause != cia402.CLAUSE or found.rest is None or not same_layout(obj, found):
+        return
+    for subindex, sub in obj.subs.items():
+        if subindex == 0 or found.entry(subindex) is not None or sub.implicit:
+            continue
+        message = (
+            f"{_label(obj, subindex, sub)}: sub-index {subindex} of {obj.index:04X}h {found.name} is not defined by "
+            f"{found.clause} (a vendor's extension; its data type is the vendor's)"
+        )
+        yield replace(ctx.report("STD003", message, ctx.at(sub)), severity=W)
 
 
 def _set_type(index: int, subindex: int, wanted: int) -> Callable[[Device], None]:
@@ -203,6 +237,10 @@ CiA 301 §7.5.2 gives the access of each standard entry: 1000h and 1018h are rea
 const), 1024h is write-only, the heartbeat and COB-ID objects are rw or, where the device fixes
 them, ro/const. A master that follows the file writes where the device refuses, or does not write
 what the standard says it may (a consumer heartbeat time, an error history clear through 1003h sub 0).
+For a drive (CiA 402-2, in each logical device whose device type names profile 402): what the drive
+reports is read-only (6041h statusword, 6064h position actual value, 6077h torque actual value),
+what the master commands is read-write (6040h controlword, 6060h modes of operation), and no
+parameter is write-only.
 
 Warning: communication works, but configuration steps fail or are skipped.""",
     "[1018]\nParameterName=Identity\nObjectType=0x9\nSubNumber=2\n[1018sub0]\nParameterName=Count\n"

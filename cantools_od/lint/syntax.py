@@ -286,11 +286,27 @@ class Spelling:
         return self.written.lower() == self.canonical.lower()
 
     def fix(self) -> Fix:
+        """Safe only for a name python-canopen does not look up: respelling one it does makes it read what it
+        did not read before (a [DeviceInfo] count, a NodeID, an object's default), so that fix is unsafe."""
         what = "section" if self.header else "key"
-        return Fix(f"write the {what} as {self.canonical}", True, self._respell)
+        return Fix(f"write the {what} as {self.canonical}", not _python_canopen_reads(self.canonical), self._respell)
 
     def _respell(self, device: Device) -> None:
         respell(device, self.where.line, self.where.column, self.written, self.canonical)
+
+
+# The names python-canopen looks up, case-sensitively, as it spells them (its `import_od`): sections, then keys.
+_PYTHON_CANOPEN_NAMES = frozenset({"DeviceInfo", "DeviceComissioning", "Comments", "DummyUsage", "Lines", "NodeID",
+    "Baudrate", "ParameterName", "ObjectType", "DataType", "AccessType", "DefaultValue", "ParameterValue", "LowLimit",
+    "HighLimit", "PDOMapping", "CompactSubObj", "NrOfEntries", "Factor", "Description", "Unit", "StorageLocation",
+    "VendorName", "VendorNumber", "ProductName", "ProductNumber", "RevisionNumber", "OrderCode", "SimpleBootUpMaster",
+    "SimpleBootUpSlave", "Granularity", "DynamicChannelsSupported", "GroupMessaging", "NrOfRXPDO", "NrOfTXPDO",
+    "LSS_Supported"})  # fmt: skip
+_PYTHON_CANOPEN_PATTERN = re.compile(r"(?:BaudRate_[0-9]+|Line[0-9]+|Dummy[0-9A-F]{4}|[0-9A-F]{4}(?:sub[0-9A-F]+)?)\Z")
+
+
+def _python_canopen_reads(name: str) -> bool:
+    return name in _PYTHON_CANOPEN_NAMES or _PYTHON_CANOPEN_PATTERN.match(name) is not None
 
 
 def spellings(ctx: Context) -> Iterator[Spelling]:
@@ -320,7 +336,9 @@ two. cantools-od reads such a name as meant, but lely's dcfchk rejects it and py
 not find it: a DCF's NodeID and baud rate, or an object list's count, are silently lost there.
 
 Error: a peer reading the file by the standard loses the entry. Case alone is DIA018.
-Fix (safe): the name is written as CiA 306 spells it; the rest of the line stays.""",
+Fix: the name is written as CiA 306 spells it; the rest of the line stays. Safe for a name
+python-canopen does not look up (an object list's count); unsafe (`--unsafe-fixes`) for one it
+does, since it then reads a value it did not read before.""",
     "[MandatoryObjects]\nSupported Objects=3\n1=0x1000\n2=0x1001\n3=0x1018",
     fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
 )

@@ -138,9 +138,9 @@ class Device(BaseModel):
 
     # The bytes the device was read from: the preserving writer edits them.
     _original: bytes | None = PrivateAttr(default=None)
-    # Set by a lint fix: the preserving writer then also rewrites counts the model derives
+    # Set by a lint fix: the preserving writer then also rewrites these counts the model derives
     # (NrOfEntries of [xxxxName]/[xxxxValue]/[xxxxDenotation], ObjectLinks) where the file has them wrong.
-    _recount: bool = PrivateAttr(default=False)
+    _recount: set[str] = PrivateAttr(default_factory=set)
     # Set by a lint fix: names and list numbers to write otherwise, as text edits of the original
     # (line → column, as written, new spelling); the file read back then says what the fixed model says.
     _respell: dict[int, tuple[int, str, str]] = PrivateAttr(default_factory=dict)

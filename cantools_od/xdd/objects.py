@@ -141,7 +141,7 @@ class ObjectReader:
                 self.ctx.warning("XDD009", f"uniqueIDRef {ref!r} names no parameter", element, "uniqueIDRef")
             else:
                 self.used.add(ref)
-                self._parameter(var, owner, parameter, has_subs, extra)
+                self._parameter(var, owner, parameter, has_subs, extra, _standard_type(owner, element))
         var.extra = extra
         word = element.attrs.get("PDOmapping")
         if word in ("no", "optional", "default", "TPDO", "RPDO"):  # now that the access is known
@@ -195,8 +195,10 @@ class ObjectReader:
         self.pending[id(var), field] = _Pending(var, owner, field, text, self.ctx.where(element, attr), key)
 
     def _parameter(
-        self, var: Variable, owner: Object, parameter: Element, has_subs: bool, extra: dict[str, str]
-    ) -> None:
+        self, var: Variable, owner: Object, parameter: Element, has_subs: bool, extra: dict[str, str],
+        standard: int | None,
+    ) -> None:  # fmt: skip
+        """`standard`: the data type CiA 301 gives the entry, if it defines one."""
         origin = var.origin
         assert origin is not None
         access = parameter.attrs.get("access")
@@ -224,8 +226,10 @@ class ObjectReader:
             self.ctx.mark(origin, "DataType", type_element)
             index = TYPE_ELEMENTS[type_element.local]
             stated = self.pending.get((id(var), "default"))
-            if index == OCTET_STRING and not (stated and stated.text):
-                index = DOMAIN  # CANopenEditor writes DOMAIN as a BITSTRING without a default value
+            if index == OCTET_STRING and not (stated and stated.text) and standard != OCTET_STRING:
+                # CANopenEditor writes DOMAIN as a BITSTRING without a default value; an entry CiA 301
+                # defines as OCTET_STRING (1023h/1025h Command and Reply) stays one.
+                index = DOMAIN
             var.data_type = index
         if not info.is_empty():
             var.canopennode = info
@@ -320,3 +324,16 @@ class ObjectReader:
                 if "separated by blanks" in message:
                     continue  # CANopenEditor's own XDD spelling of OCTET_STRING values
                 self.ctx.report.add(code, severity, f"{pending.key}: {message}", *pending.where)
+
+
+def _standard_type(owner: Object, element: Element) -> int | None:
+    """The data type CiA 301 gives the entry `element` describes (a sub-object's by its subIndex), if any."""
+    from ..model.cia301.definitions import definition
+
+    found = definition(owner.index)
+    try:
+        subindex = int(element.attrs.get("subIndex", "0"), 16)
+    except ValueError:
+        return None
+    entry = found.entry(subindex) if found is not None else None
+    return entry.data_type if entry is not None else None

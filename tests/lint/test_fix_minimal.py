@@ -91,20 +91,20 @@ def test_fix_keeps_the_empty_keys_of_the_section_it_edits(tmp_path: Path) -> Non
     source = tmp_path / "in" / "t.eds"
     source.parent.mkdir()
     source.write_text(text)
-    _, after = fix_with_cli(tmp_path, source, "--select", "EDS026")
+    _, after = fix_with_cli(tmp_path, source, "--select", "EDS026", "--unsafe-fixes")
     assert after.decode() == text.replace("DefaultValue=2", "DefaultValue=3")
 
 
 def test_fix_keeps_empty_parameter_values_of_a_real_dcf(tmp_path: Path) -> None:
-    before, after = fix_with_cli(tmp_path, corpus_file("oresat__c3.dcf"))
-    assert after != before  # the file has safe fixes ($NODEID spellings, mapping lengths)
+    before, after = fix_with_cli(tmp_path, corpus_file("oresat__c3.dcf"), "--unsafe-fixes")
+    assert after != before  # the file has fixes ($NODEID spellings, mapping lengths: both unsafe)
     empty = before.count(b"\nParameterValue=\n") + before.count(b"\nParameterValue=\r\n")
     assert empty and after.count(b"\nParameterValue=\n") + after.count(b"\nParameterValue=\r\n") == empty
 
 
 def test_fix_keeps_the_limits_of_roboteq_2135sub0(tmp_path: Path) -> None:
     source = corpus_file("roboteq__roboteq_motor_controllers_v2.0-30-01-2019.eds")
-    before, after = fix_with_cli(tmp_path, source)
+    before, after = fix_with_cli(tmp_path, source, "--unsafe-fixes")
     section = re.compile(rb"\[2135sub0\][^\[]*")
     old, new = section.search(before), section.search(after)
     assert old is not None and new is not None

@@ -40,9 +40,33 @@ def test_identity_mismatch_and_fix() -> None:
     text = base("RevisionNumber=0x00010000", "RevisionNumber=0")
     assert findings(text, "EDS040") == at(text, "RevisionNumber=0", 16)
     assert messages(text, "EDS040") == ["RevisionNumber=0x00000000 but 1018h sub3 DefaultValue=0x00010000"]
-    after = fix(text, "EDS040")
+    # from an EDS's DefaultValue, maybe a template's placeholder: unsafe
+    assert [f.fix.safe for f in run(text, "EDS040") if f.fix is not None] == [False]
+    after = fix(text, "EDS040", safe_only=False)
     assert diff(text, after) == ["- RevisionNumber=0", "+ RevisionNumber=0x00010000"]
     assert findings(after, "EDS040") == []
+
+
+def _dcf(product: str, default: str, value: str) -> str:
+    """A DCF (python-canopen__e35-like shape): [DeviceInfo] ProductNumber, and 1018h sub2's template DefaultValue
+    and the configured device's ParameterValue."""
+    text = base("ProductNumber=0x00000001", f"ProductNumber={product}")
+    section = text.index("[1018sub2]")
+    start = text.index("DefaultValue=", section)
+    end = text.index("\n", start)
+    return text[:start] + f"DefaultValue={default}\nParameterValue={value}" + text[end:]
+
+
+def test_identity_takes_a_dcfs_parameter_value_as_the_truth() -> None:
+    # [DeviceInfo] agrees with the device's ParameterValue but not with the template's DefaultValue: no finding,
+    # and above all no fix that writes the template over the device's number
+    text = _dcf("0x30030209", "0x0101503C", "0x30030209")
+    assert findings(text, "EDS040") == []
+    # [DeviceInfo] differs from the ParameterValue: the fix writes the ParameterValue, safely
+    text = _dcf("0x0101503C", "0x0101503C", "0x30030209")
+    assert messages(text, "EDS040") == ["ProductNumber=0x0101503C but 1018h sub2 ParameterValue=0x30030209"]
+    after = fix(text, "EDS040")
+    assert diff(text, after) == ["- ProductNumber=0x0101503C", "+ ProductNumber=0x30030209"]
 
 
 def test_identity_all_three() -> None:

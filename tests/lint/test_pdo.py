@@ -187,7 +187,7 @@ def test_pdo044_fitting_access(direction: str, access: str) -> None:
     assert findings(eds(*pdo, var(0x2000, "Value", 0x0006, access)), "PDO044") == []
 
 
-def test_pdo045_length_and_its_safe_fix_changes_one_line() -> None:
+def test_pdo045_length_and_its_unsafe_fix_changes_one_line() -> None:
     text = eds(*tpdo("0x60410010", "0x60640010"), STATUS, POSITION)
     device = load(text)
     (found,) = [f for f in lint(device) if f.code == "PDO045"]
@@ -195,7 +195,8 @@ def test_pdo045_length_and_its_safe_fix_changes_one_line() -> None:
         "TPDO1: entry 0x60640010 maps 16 bits, but 6064sub0 (Position actual value) is INTEGER32 (32 bits)"
     )
     assert at(found) == value_at(text, "1A00sub2")
-    assert found.fix is not None and found.fix.safe
+    # unsafe: every reader reads a new mapping, every later entry of the frame moves
+    assert found.fix is not None and not found.fix.safe
     found.fix.apply(device)
     before, after = text.splitlines(), dumps(device).decode().splitlines()
     changed = [(n + 1, a, b) for n, (a, b) in enumerate(zip(before, after, strict=True)) if a != b]
@@ -217,7 +218,7 @@ def test_pdo045_fix_rewrites_a_compact_value_section() -> None:
     (found,) = [f for f in lint(device) if f.code == "PDO045"]
     # no section of its own: the [1A00Value] entry that holds the value, at the value
     assert at(found) == (text.splitlines().index("1=0x60410008") + 1, 3)
-    assert found.fix is not None and found.fix.safe
+    assert found.fix is not None and not found.fix.safe
     found.fix.apply(device)
     assert dumps(device, "dcf").decode() == text.replace("1=0x60410008", "1=0x60410010")
 

@@ -69,7 +69,10 @@ def test_lint_fix_edits_the_xml_minimally(tmp_path: Path) -> None:
     assert "EDS033" in before.stdout
     line = next(n for n, t in enumerate(text.splitlines(), 1) if "0x80+$nodeid" in t)
     assert f"dev.xdd:{line}:" in before.stdout
+    # unsafe (a peer reads a value from the new spelling it did not read from the old): --unsafe-fixes applies it
     assert _run(tmp_path, "lint", "dev.xdd", "--select", "EDS033", "--fix").returncode == 0
+    assert path.read_text() == text
+    assert _run(tmp_path, "lint", "dev.xdd", "--select", "EDS033", "--fix", "--unsafe-fixes").returncode == 0
     assert path.read_text() == text.replace("0x80+$nodeid", "$NODEID+0x80")
 
 

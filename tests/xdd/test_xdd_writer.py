@@ -130,10 +130,13 @@ def test_control_characters_in_names_stay_well_formed() -> None:
 
 
 def test_identity_fix_edits_the_element_text(tmp_path: Path) -> None:
-    """lint --fix sets VendorNumber from 1018h sub1 (EDS040): only the vendorID element's text changes."""
+    """lint --fix --unsafe-fixes sets VendorNumber from 1018h sub1 (EDS040; unsafe from a default, which may be a
+    template's): only the vendorID element's text changes."""
     text = document(MANDATORY).replace("<vendorID>0x00000123</vendorID>", "<vendorID>0x00000999</vendorID>")
     path = tmp_path / "dev.xdd"
     path.write_text(text)
-    result = subprocess.run([*cli_command(), "lint", "--fix", "--select", "EDS040", "dev.xdd"], cwd=tmp_path)
+    command = [*cli_command(), "lint", "--fix", "--select", "EDS040", "dev.xdd"]
+    assert subprocess.run(command, cwd=tmp_path).returncode == 1 and path.read_text() == text
+    result = subprocess.run([*command, "--unsafe-fixes"], cwd=tmp_path)
     assert result.returncode == 0
     assert path.read_text() == text.replace("0x00000999", "0x00000123")

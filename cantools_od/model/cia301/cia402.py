@@ -1,18 +1,26 @@
 """The CiA 402 drive profile objects of the first logical device (6000h-67FFh), in the table form of
 `definitions`: applied to a device whose 1000h says device profile 402.
 
-Source: CiA 402-2 (IEC 61800-7-201), the object dictionary of the drive profile. Access types are
-left open: the profile lets a drive make most parameters read-only or writable.
+Source: CiA 402-2 (IEC 61800-7-201), the object dictionary of the drive profile. Access: the
+values a drive measures or reports are read-only (6041h statusword, 6061h, 6064h, 606Ch, 6077h,
+...); the commands a master writes are read-write (6040h controlword, 6060h, 607Ah, 60FFh,
+6071h); a parameter may be read-write or made read-only by the drive, but never write-only.
+PDO mapping is left open: the profile lets a drive map almost every process value.
+
+CiA 301 gives each logical device 800h objects from 6000h; a further logical device's device type
+is its object 67FFh + n x 800h (the first one's is 1000h).
 """
 
 from __future__ import annotations
 
-from ..objects import ObjectKind
+from ..objects import AccessType, ObjectKind
 from .definitions import (
     INTEGER8,
     INTEGER16,
     INTEGER32,
     RO,
+    RW,
+    RW_OR_RO,
     UNSIGNED8,
     UNSIGNED16,
     UNSIGNED32,
@@ -27,18 +35,34 @@ from .definitions import (
 PROFILE = 402
 CLAUSE = "CiA 402-2"
 AREA = range(0x6000, 0x6800)  # the first logical device's profile objects
+LOGICAL_DEVICE_SPAN = 0x800
+LOGICAL_DEVICES = 8  # 6000h-9FFFh
+DEVICE_TYPE_OFFSET = 0x7FF  # a logical device's own device type: its last object (67FFh, 6FFFh, ...)
+MEASURED = frozenset({0x603F, 0x6041, 0x6061, 0x6062, 0x6063, 0x6064, 0x606B, 0x606C, 0x6074, 0x6077, 0x6078, 0x6079,
+                      0x60F4, 0x60FC, 0x60FD, 0x6502})  # fmt: skip
+"""Read-only: what the drive reports."""
+COMMANDS = frozenset({0x6040, 0x6060, 0x6071, 0x607A, 0x60FF})
+"""Read-write: what the master commands."""
 # The profile's record data types (of 60C2h and of 60C4h).
 INTERPOLATION_TIME_PERIOD_TYPE, INTERPOLATION_DATA_CONFIGURATION_TYPE = 0x0080, 0x0081
 _O = Mapping.OPTIONAL
 
 
+def _access(index: int) -> frozenset[AccessType]:
+    """What the profile lets the object's entries be: never write-only."""
+    return RO if index in MEASURED else RW if index in COMMANDS else RW_OR_RO
+
+
 def _var(index: int, name: str, data_type: int) -> Definition:
     # Drives map almost every process value, and the profile allows it: mapping is left open.
-    return Definition(index, name, ObjectKind.VAR, CLAUSE, (Entry(name, data_type, None, _O),))
+    return Definition(index, name, ObjectKind.VAR, CLAUSE, (Entry(name, data_type, _access(index), _O),))
 
 
 def _array(index: int, name: str, data_type: int) -> Definition:
-    return array(index, name, Entry(name, data_type, None, _O), count_entry("Highest sub-index supported", RO), CLAUSE)
+    # Every ARRAY of the profile has two elements (a range's ends, a ratio's two numbers, two homing speeds):
+    # a further sub-index is the vendor's, of the vendor's type.
+    count = count_entry("Highest sub-index supported", RO)
+    return array(index, name, Entry(name, data_type, RW_OR_RO, _O), count, CLAUSE, until=2)
 
 
 DEFINITIONS: tuple[Definition, ...] = (
@@ -100,8 +124,8 @@ DEFINITIONS: tuple[Definition, ...] = (
     _var(0x60B1, "Velocity offset", INTEGER32),
     _var(0x60B2, "Torque offset", INTEGER16),
     record(0x60C2, "Interpolation time period", count_entry("Highest sub-index supported", RO, 2, 2),
-           Entry("Interpolation time period value", UNSIGNED8, None, _O),
-           Entry("Interpolation time index", INTEGER8, None, _O), clause=CLAUSE),
+           Entry("Interpolation time period value", UNSIGNED8, RW_OR_RO, _O),
+           Entry("Interpolation time index", INTEGER8, RW_OR_RO, _O), clause=CLAUSE),
     _var(0x60F4, "Following error actual value", INTEGER32),
     _var(0x60FC, "Position demand internal value", INTEGER32),
     _var(0x60FD, "Digital inputs", UNSIGNED32),
@@ -115,8 +139,22 @@ _BY_INDEX = {d.index: d for d in DEFINITIONS}
 
 
 def definition(index: int) -> Definition | None:
-    """The profile's definition of the object at `index` of the first logical device, if it has one."""
+    """The profile's definition of the object at `index` of the first logical device, if it has one (a further
+    logical device's objects: at `index` minus n x 800h)."""
     return _BY_INDEX.get(index)
+
+
+def logical_device(index: int) -> int | None:
+    """Which logical device (0: the first) the profile object at `index` belongs to; None outside 6000h-9FFFh."""
+    offset = index - AREA.start
+    if not 0 <= offset < LOGICAL_DEVICES * LOGICAL_DEVICE_SPAN:
+        return None
+    return offset // LOGICAL_DEVICE_SPAN
+
+
+def device_type_object(device: int) -> int:
+    """The object holding the device type of logical device `device` (0: the first)."""
+    return AREA.start + device * LOGICAL_DEVICE_SPAN + DEVICE_TYPE_OFFSET
 
 
 def device_profile(device_type: int) -> int:

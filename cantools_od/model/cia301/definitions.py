@@ -134,11 +134,12 @@ def var(
 
 def array(
     index: int, name: str, element: Entry, count: Entry | None = None, clause: str = CIA301, last: int = -1,
-    named: tuple[Entry, ...] = (), eds_name: str | None = None,
+    named: tuple[Entry, ...] = (), eds_name: str | None = None, until: int = 0xFE,
 ) -> Definition:  # fmt: skip
-    """An ARRAY: sub-index 0 counts the elements, which all have one data type (the first may be named)."""
+    """An ARRAY: sub-index 0 counts the elements, which all have one data type (the first may be named); the
+    standard defines the elements up to sub-index `until`."""
     subs = (count or count_entry(), *named)
-    return Definition(index, name, ObjectKind.ARRAY, clause, subs, element, last, eds_name=eds_name)
+    return Definition(index, name, ObjectKind.ARRAY, clause, subs, element, last, rest_until=until, eds_name=eds_name)
 
 
 def record(

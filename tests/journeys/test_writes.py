@@ -23,7 +23,7 @@ def writes(folder: Path) -> dict[str, list[str]]:
     (folder / "emcy.eds").write_bytes(FIXABLE)
     return {
         "fmt": ["fmt", "drive.eds"],
-        "lint --fix": ["lint", "--select", "EDS033", "--fix", "emcy.eds"],
+        "lint --fix": ["lint", "--select", "EDS033", "--fix", "--unsafe-fixes", "emcy.eds"],  # EDS033 is unsafe
         "convert": ["convert", "drive.eds", "-o", "drive.json"],
         "gen": ["gen", "drive.eds", *GEN, "-o", "out", "--depfile", "out/drive.d"],
     }

@@ -17,7 +17,8 @@ from support import cli_command
 
 
 def _parameter(sub: int, access: str, label: str, body: str) -> str:
-    return f'<parameter uniqueID="UID_SUB_2000{sub:02X}" access="{access}"><label lang="en">{label}</label>{body}</parameter>'
+    label_element = f'<label lang="en">{label}</label>'
+    return f'<parameter uniqueID="UID_SUB_2000{sub:02X}" access="{access}">{label_element}{body}</parameter>'
 
 
 _PARAMETERS = "\n".join(

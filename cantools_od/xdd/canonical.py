@@ -209,11 +209,10 @@ def _value(device: Device, var: Variable, owner: Object, value: object) -> str:
 
 def _parameter(out: _Out, device: Device, var: Variable, owner: Object, unique: str) -> None:
     access = var.access
-    if access is None and not (var is owner and owner.has_subs):
+    kept = var.extra.get("access") if access is None else None  # e.g. noAccess: no SDO reaches the entry
+    if access is None and kept is None and not (var is owner and owner.has_subs):
         access = AccessType.RO  # CiA 311's default, written out so the text reads back the same
-    pairs: list[tuple[str, object]] = [("uniqueID", unique), ("access", ACCESS_NAME.get(access) if access else None)]
-    if access is None and "access" in var.extra:
-        pairs[1] = ("access", var.extra["access"])
+    pairs: list[tuple[str, object]] = [("uniqueID", unique), ("access", ACCESS_NAME.get(access) if access else kept)]
     pairs += [(key[10:], value) for key, value in var.extra.items() if key.startswith("parameter@")]
     out.add(5, f"<q1:parameter{_attrs(pairs)}>")
     label = restore(var.extra["label"]) if "label" in var.extra else var.name  # only kept labels are escaped
@@ -383,7 +382,7 @@ def _management(out: _Out, device: Device, xdc: bool) -> None:
     commissioning = device.commissioning
     if xdc and commissioning is None and device.node_id is not None:
         commissioning = Commissioning(node_id=device.node_id)  # an XDC made for one node
-    if xdc and commissioning is not None:
+    if commissioning is not None:  # an .xdd may state one too (CANopenEditor's do): it reads back as configured
         pairs = [(name, getattr(commissioning, field)) for name, field in _COMMISSIONING]
         pairs = [(k, f"{v} Kbps" if k == "actualBaudRate" and v is not None else v) for k, v in pairs]
         pairs += list(commissioning.extra.items())

@@ -107,17 +107,7 @@ def test_pair_in_every_format_and_both_ways(pair: Path) -> None:
 
 
 # `fmt` of these files loses what diff then reports (findings for the XDD writer, not for diff).
-FMT_LOSSES = {
-    **dict.fromkeys(
-        ("Inviz__stm32app__1", "Inviz__stm32app__3", "Inviz__stm32app__4", "Inviz__stm32app__5"),
-        "fmt of an XDD writes noAccess entries as ro",
-    ),
-    **dict.fromkeys(
-        ("zylos146__CANFuck__1", "zylos146__CANFuck__2", "zylos146__CANFuck__3"),
-        "fmt of an XDD writes noAccess entries as ro",
-    ),
-    "oresat__oresat-firmware__6": "fmt of an XDD drops its deviceCommissioning",
-}
+FMT_LOSSES: dict[str, str] = {}  # pair -> what fmt of its new file loses (none known)
 
 
 def fmt_params() -> list[object]:

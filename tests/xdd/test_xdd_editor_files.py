@@ -62,7 +62,7 @@ def test_convert_to_the_same_format_copies_the_bytes(tmp_path: Path) -> None:
 
 
 def test_fix_changes_only_the_fixed_text(tmp_path: Path) -> None:
-    """lint --fix --unsafe-fixes sets vendorID from 1018h sub1: every other byte (line ends, editor attributes) stays."""
+    """lint --fix --unsafe-fixes sets vendorID from 1018h sub1: all other bytes (line ends, editor attributes) stay."""
     data = _editor_file(vendor="0x00000999")
     path = tmp_path / "dev.xdd"
     path.write_bytes(data)

@@ -82,8 +82,9 @@ def test_convert_says_what_xdd_cannot_hold(tmp_path: Path, monkeypatch: pytest.M
     (tmp_path / "drive.dcf").write_bytes(dcf)
     result = CliRunner().invoke(main, ["convert", "drive.dcf", "-o", "drive.xdd"])
     assert result.exit_code == 0, result.output
-    assert "drive.dcf: warning: [DeviceComissioning] (node-ID, bit rate, node name) is not kept in XDD" in result.output
-    assert "(XDC and DCF keep it)" in result.output
+    # an XDD keeps a configured device's deviceCommissioning, as CANopenEditor's .xdd files do: nothing lost
+    assert "[DeviceComissioning]" not in result.output
+    assert load(tmp_path / "drive.xdd").commissioning.node_id == 5
     assert "drive.dcf: warning: [Comments] is not kept in XDD (EDS and DCF keep it)" in result.output
     same = CliRunner().invoke(main, ["convert", "drive.dcf", "-o", "copy.dcf"])
     assert same.exit_code == 0 and "warning" not in same.output

@@ -49,11 +49,10 @@ class DataType:
 
     def number_problem(self, value: int | float) -> str | None:
         """Why the number `value` is no value of this numeric type (outside an integer type's range,
-        not finite, beyond REAL32), or None when it is one; None for types that are not numeric."""
+        a finite number beyond REAL32), or None when it is one; None for types that are not numeric.
+        NaN and the infinities are IEEE 754 values of both REAL types, which every target spells."""
         if self.kind is ValueKind.REAL:
-            if not math.isfinite(value):
-                return f"{value!r} is not a finite number"
-            if self.bits == 32 and not _fits_real32(float(value)):
+            if math.isfinite(value) and self.bits == 32 and not _fits_real32(float(value)):
                 return f"{value!r} is outside {self.name}"
             return None
         bounds = self.int_range()

@@ -83,10 +83,11 @@ def test_a_domain_default_0_is_canopennodes_empty_not_an_unstorable_default() ->
     found = _codes(text, profile="canopennode")
     assert [code for code, _ in found if code == "CNO007"] == []
     assert any(code == "EDS030" and "CANopenNode's way to say empty" in m for code, m in found)
+    # Any other DOMAIN default is ignored too, as CANopenEditor and the stack do (gen --explain says so; #21)
     odd = text.replace(
         "DataType=0x000F\nAccessType=rw\nDefaultValue=0", "DataType=0x000F\nAccessType=rw\nDefaultValue=0x1"
     )
-    assert [code for code, _ in _codes(odd, profile="canopennode") if code == "CNO007"] == ["CNO007"]
+    assert [code for code, _ in _codes(odd, profile="canopennode") if code == "CNO007"] == []
 
 
 # odrive-canopen-cia402.xdd and oresat gps.xdd: 1023h's Command and Reply as <BITSTRING/>, no dataType, no default.

@@ -252,6 +252,7 @@ NAMES: dict[str, dict[str, str]] = {
         "STD004": "standard-access-type",
         "STD005": "standard-pdo-mapping",
         "STD006": "standard-value",
+        "STD007": "standard-default-mapping",
     },
     "canopennode": {
         "CNO001": "type-stack-cannot-hold",

@@ -198,6 +198,8 @@ def pdo(
     return text + record(map_index, f"{kind}{number} mapping parameter", {0: count_sub, **mapped})
 
 
+# 1000h of a drive: device profile 402 in the low 16 bits (servo drive in the high ones).
+DEVICE_TYPE_402 = var(0x1000, "Device type", 0x0007, "ro", "0x00020192", mapping=0)
 STATUSWORD = var(0x6041, "Statusword", 0x0006, "ro")
 CONTROLWORD = var(0x6040, "Controlword", 0x0006, "rw")
 POSITION = var(0x6064, "Position actual value", 0x0004, "ro")

@@ -300,6 +300,48 @@ def mapping(ctx: Context) -> Iterator[Finding]:
                 yield ctx.report("STD005", message, ctx.value_at(section, key))
 
 
+def _direction(entry: Entry) -> str:
+    """The PDOs a profile's predefined mapping puts the entry in: TPDOs for what the device reports (read-only),
+    RPDOs for what the master writes."""
+    return "TPDO" if entry.access is not None and entry.access <= definitions.RO else "RPDO"
+
+
+@rule(
+    "STD007",
+    W,
+    "Standard object entry a profile maps by default, not mappable that way",
+    """
+CiA 402-3 maps the controlword 6040h into the first RPDO and the statusword 6041h into the first
+TPDO of a drive (in each logical device whose device type names profile 402): a master drives the
+state machine through them, and a standard master sets up its PDOs that way. A file that marks one
+of them `PDOMapping=0`, or makes the controlword TPDO-only (`AccessType=rwr`) or the statusword
+RPDO-only (an XDD's `PDOmapping="RPDO"`), announces a drive that cannot be run by PDOs: the
+configuration fails with SDO abort 0604 0041h, or the master polls by SDO.
+
+The other objects of the profile may be mappable or not: drives with a static mapping make the
+actual values unmappable, others map option codes too, and the profile allows both.
+
+Warning: the drive may still be run by SDO; a standard PDO set-up fails.""",
+    ex.DEVICE_TYPE_402 + ex.STATUSWORD.replace("PDOMapping=1", "PDOMapping=0"),
+    fixed=ex.DEVICE_TYPE_402 + ex.STATUSWORD,
+    fix_safety="No automatic fix: making an entry mappable changes what a master may map.",
+)
+def default_mapping(ctx: Context) -> Iterator[Finding]:
+    for obj, found in standard_objects(ctx.device):
+        for subindex, var, entry in _entries(obj, found):
+            kind = var.pdo_mapping_kind()
+            wanted = _direction(entry)
+            if entry.mapping is not Mapping.DEFAULT or kind is None or kind in (wanted, "optional", "default"):
+                continue
+            section, key = _keys_of(ctx, obj, var, "PDOMapping" if kind == "no" else "AccessType")
+            said = "not mappable" if kind == "no" else f"{kind} only"
+            message = (
+                f"{_label(obj, subindex, var)} {said}: {found.clause} maps {_what(obj, found, subindex, var, entry)} "
+                f"into {wanted}s by default"
+            )
+            yield ctx.report("STD007", message, ctx.value_at(section, key))
+
+
 @rule(
     "STD006",
     W,

@@ -57,6 +57,9 @@ class Mapping(Enum):
 
     NO = "no"
     OPTIONAL = "optional"
+    DEFAULT = "default"
+    """A profile's predefined PDOs map it (CiA 402: 6040h into the first RPDO, 6041h into the first TPDO): the entry
+    must be mappable, into RPDOs when the master writes it, into TPDOs when the device reports it."""
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 from lintkit import BASE, replace
-from xddkit import SHARED
+from xddkit import MANDATORY, SHARED, document
 
 from cantools_od import load, loads
 from cantools_od.lint import lint
@@ -238,3 +238,22 @@ def test_profile_findings_on_real_files_are_the_reviewed_ones(path: Path) -> Non
             found.add(f"{finding.code} {finding.message}")
     expected = REVIEWED.get(path.name, set()) if path.parent.parent.name == "eds-corpus" else set()
     assert found == expected
+
+
+def test_default_mapping_in_an_xdd_says_the_direction() -> None:
+    """An XDD states the direction: a statusword RPDO-only is reported, TPDO or optional is not."""
+
+    def xdd(word: str) -> str:
+        drive = MANDATORY.replace('defaultValue="0x00000000"', 'defaultValue="0x00020192"', 1)
+        statusword = (
+            '<CANopenObject index="6041" name="Statusword" objectType="7" dataType="0006" accessType="rw" '
+            f'PDOmapping="{word}" />'
+        )
+        return document(drive + statusword)
+
+    def std007(word: str) -> list[str]:
+        return [f.message for f in lint(loads(xdd(word), source="t.xdd")) if f.code == "STD007"]
+
+    assert std007("RPDO") == ["[6041] RPDO only: CiA 402-2 maps 6041h Statusword into TPDOs by default"]
+    assert std007("no") == ["[6041] not mappable: CiA 402-2 maps 6041h Statusword into TPDOs by default"]
+    assert std007("TPDO") == std007("optional") == []

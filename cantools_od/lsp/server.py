@@ -18,6 +18,7 @@ from ..model.cia301.cobid import ALL_NODE_IDS
 from .diagnostics import diagnostics
 from .document import Analysis, Encoding, analyse, path_of
 from .positions import Lines
+from .quick import quick_findings
 
 DEBOUNCE = 0.1
 """Seconds of quiet after an edit before the document is read and linted again."""
@@ -41,11 +42,13 @@ class OdServer(LanguageServer):
         self.open: dict[str, Open] = {}
         self.options = LintOptions()
         self.rules_url: str | None = None
+        self.quick = True
         self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="lint")
         self.tasks: set[asyncio.Task[None]] = set()
 
     def configure(self, settings: object) -> None:
-        """initializationOptions: {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "..."}."""
+        """initializationOptions: {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "...",
+        "quickDiagnostics": false}."""
         if not isinstance(settings, dict):
             return
         node_id = settings.get("nodeId")
@@ -55,6 +58,7 @@ class OdServer(LanguageServer):
             node_id=node_id if isinstance(node_id, int) and node_id in ALL_NODE_IDS else None,
             profile=profile if profile == "canopennode" else None,
         )
+        self.quick = settings.get("quickDiagnostics") is not False
         url = settings.get("rulesUrl")
         self.rules_url = url if isinstance(url, str) and url else None
 
@@ -90,6 +94,8 @@ class OdServer(LanguageServer):
         document = self.workspace.get_text_document(uri)
         text, version = document.source, document.version
         loop = asyncio.get_running_loop()
+        if self.quick and state.analysis is not None:
+            await self.publish_quick(uri, state.analysis, text, version)
         try:
             analysis = await loop.run_in_executor(
                 self.worker, analyse, uri, text, version, state.encoding, self.options
@@ -104,6 +110,24 @@ class OdServer(LanguageServer):
         state.analysis, state.lines, state.cache = analysis, Lines(text), {}
         self.text_document_publish_diagnostics(
             types.PublishDiagnosticsParams(uri, diagnostics(analysis, state.lines, self.rules_url), version)
+        )
+
+    async def publish_quick(self, uri: str, before: Analysis, text: str, version: int | None) -> None:
+        """Publish the quick findings of an edit inside one object (quick.py), without a version: the
+        exact ones, published with the version, follow."""
+        state = self.open[uri]
+        try:
+            found = await asyncio.get_running_loop().run_in_executor(
+                self.worker, quick_findings, before, text, uri, state.encoding, self.options
+            )
+        except Exception as error:  # the full check answers all the same
+            print(f"cantools-od lsp: {uri}: quick check: {type(error).__name__}: {error}", file=sys.stderr)
+            return
+        if found is None or self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
+            return
+        quick = Analysis(None, text, None, found)
+        self.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri, diagnostics(quick, Lines(text), self.rules_url))
         )
 
 

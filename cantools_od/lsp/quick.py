@@ -124,7 +124,9 @@ def quick_findings(
 ) -> list[Finding] | None:
     """The quick findings for `text`, an edit of `old`'s text; None when the edit is not one the quick
     answer covers (the full check alone answers)."""
-    if old.device is None or old.device.file_format != "eds" or any(b in text for b in _OTHER_BREAKS):
+    if old.device is None or old.device.file_format != "eds" or text == old.text:
+        return None  # a save (the configuration may have changed): the full check alone
+    if any(b in text for b in _OTHER_BREAKS):
         return None
     if text.count("\r") != text.count("\r\n"):  # lines that end in CR alone: headers are found after LF only
         return None

@@ -42,13 +42,11 @@ class OdServer(LanguageServer):
         self.open: dict[str, Open] = {}
         self.options = LintOptions()
         self.rules_url: str | None = None
-        self.quick = True
         self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="lint")
         self.tasks: set[asyncio.Task[None]] = set()
 
     def configure(self, settings: object) -> None:
-        """initializationOptions: {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "...",
-        "quickDiagnostics": false}."""
+        """initializationOptions: {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "..."}."""
         if not isinstance(settings, dict):
             return
         node_id = settings.get("nodeId")
@@ -58,7 +56,6 @@ class OdServer(LanguageServer):
             node_id=node_id if isinstance(node_id, int) and node_id in ALL_NODE_IDS else None,
             profile=profile if profile == "canopennode" else None,
         )
-        self.quick = settings.get("quickDiagnostics") is not False
         url = settings.get("rulesUrl")
         self.rules_url = url if isinstance(url, str) and url else None
 
@@ -94,7 +91,7 @@ class OdServer(LanguageServer):
         document = self.workspace.get_text_document(uri)
         text, version = document.source, document.version
         loop = asyncio.get_running_loop()
-        if self.quick and state.analysis is not None:
+        if state.analysis is not None:
             await self.publish_quick(uri, state.analysis, text, version)
         try:
             analysis = await loop.run_in_executor(

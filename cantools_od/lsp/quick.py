@@ -21,6 +21,7 @@ from functools import cache
 
 from ..lint import RULES, Finding, LintOptions, lint
 from ..lint.codes import load as load_families
+from ..model.cia301.objects import COMM_BASE, DEVICE_TYPE, MAP_BASE, PDO_SPAN
 from ..sniff import NotADeviceDescription
 from .document import Analysis, Encoding, read, selection_for
 
@@ -150,16 +151,16 @@ def quick_findings(
 
 
 _MAPPED = re.compile(r"=[ \t]*(?:0x([0-9a-f]{5,8})|([1-9][0-9]{4,9}))[ \t]*\r?$", re.IGNORECASE | re.MULTILINE)
-_PDO_PAIRS = ((0x1400, 0x1600), (0x1800, 0x1A00))  # communication record, mapping record: 512 each
 
 
 def _context(layout: _Layout, index: int) -> set[int]:
     """The object, the device type (which profile's objects the file has), its PDO's other record, and
     the objects its values name as mapping entries do."""
-    wanted = {index, 0x1000}
-    for communication, mapping in _PDO_PAIRS:
-        if communication <= index < mapping + 0x200:
-            wanted.add(index + 0x200 if index < mapping else index - 0x200)
+    wanted = {index, DEVICE_TYPE}
+    for direction, communication in COMM_BASE.items():
+        mapping = MAP_BASE[direction]
+        if communication <= index < mapping + PDO_SPAN:
+            wanted.add(index - communication + mapping if index < mapping else index - mapping + communication)
     text = layout.text
     for at, owner in enumerate(layout.objects):
         if owner == index:

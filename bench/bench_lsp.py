@@ -67,8 +67,9 @@ def _edit_lines(lines: list[str], edits: int) -> list[int]:
     return [found[k * len(found) // edits] for k in range(edits)]
 
 
-def _edited(lines: list[str], line: int, version: int) -> str:
-    return f"DefaultValue={version % 2}"
+def _edited(lines: list[str], line: int) -> str:
+    """The line with another value: every edit changes the text."""
+    return "DefaultValue=1" if lines[line].strip() != "DefaultValue=1" else "DefaultValue=2"
 
 
 async def run(path: Path, edits: int) -> dict[str, list[float]]:
@@ -85,7 +86,7 @@ async def run(path: Path, edits: int) -> dict[str, list[float]]:
     opened = await client.published(1) - start
     exact, quick = [], []
     for version, line in enumerate(_edit_lines(lines, edits), 2):
-        new = _edited(lines, line, version)
+        new = _edited(lines, line)
         change = types.TextDocumentContentChangePartial(
             range=types.Range(types.Position(line, 0), types.Position(line, len(lines[line]))), text=new
         )
@@ -118,7 +119,7 @@ def cpu(path: Path, edits: int) -> dict[str, list[float]]:
     for version, line in enumerate(_edit_lines(text.splitlines(), edits), 2):
         lines = before.text.splitlines(keepends=True)
         ending = lines[line][len(lines[line].rstrip("\r\n")) :]
-        lines[line] = _edited(lines, line, version) + ending
+        lines[line] = _edited(lines, line) + ending
         edited = "".join(lines)
         started = time.process_time()
         quick_findings(before, edited, uri, encoding, options)

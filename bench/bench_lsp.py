@@ -4,15 +4,20 @@
     PYTHONPATH=. python bench/bench_lsp.py path/to/file.eds --edits 10
 
 A real client (pygls's) starts the server process, opens the file, waits for its diagnostics, then
-makes one-line edits (a DefaultValue rewritten, alternately to two values) and times each from the
-didChange notification to the publishDiagnostics of that version: the debounce, reading and linting
-the whole text, and the protocol. Prints the open time and the median and worst edit time, in ms.
+makes one-line edits (DefaultValue lines of objects spread over the file rewritten) and times each
+from the didChange notification to the diagnostics: the quick ones (published without a version,
+from a check of the edited object alone) and the exact ones (published with the edit's version,
+from reading and linting the whole text). Both times include the server's debounce (DEBOUNCE in
+cantools_od/lsp/server.py) and the protocol. Prints the open time and the median and worst edit
+times in ms, the load average, and the CPU time one re-check takes in this process (quick and full),
+which depends less on what else the machine runs.
 """
 
 from __future__ import annotations
 
 import argparse
 import asyncio
+import os
 import statistics
 import sys
 import time
@@ -30,11 +35,16 @@ class Client(LanguageClient):
     def __init__(self) -> None:
         super().__init__("bench", "1")
         self.versions: dict[int | None, float] = {}
+        self.quick: dict[int, float] = {}
+        self.sent = 0  # the version last sent: a publish without a version answers it quickly
         self.arrived = asyncio.Event()
 
         @self.feature(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
         def published(client: Client, params: types.PublishDiagnosticsParams) -> None:
-            client.versions[params.version] = time.perf_counter()
+            if params.version is None:
+                client.quick.setdefault(client.sent, time.perf_counter())
+            else:
+                client.versions[params.version] = time.perf_counter()
             client.arrived.set()
 
     async def published(self, version: int) -> float:
@@ -51,7 +61,18 @@ def _largest() -> Path:
     return max(files, key=lambda p: p.stat().st_size)
 
 
-async def run(path: Path, edits: int) -> dict[str, float]:
+def _edit_lines(lines: list[str], edits: int) -> list[int]:
+    """DefaultValue lines with a decimal value, spread evenly over the file."""
+    found = [n for n, t in enumerate(lines) if t.startswith("DefaultValue=") and t[13:].strip().isdigit()]
+    return [found[k * len(found) // edits] for k in range(edits)]
+
+
+def _edited(lines: list[str], line: int) -> str:
+    """The line with another value: every edit changes the text."""
+    return "DefaultValue=1" if lines[line].strip() != "DefaultValue=1" else "DefaultValue=2"
+
+
+async def run(path: Path, edits: int) -> dict[str, list[float]]:
     client = Client()
     server = Path(sys.executable).parent / "cantools-od"
     await client.start_io(str(server), "lsp")
@@ -60,26 +81,59 @@ async def run(path: Path, edits: int) -> dict[str, float]:
     text = decode_as(path.read_bytes())[0]
     uri = path.resolve().as_uri()
     lines = text.splitlines()
-    line = next(n for n, t in enumerate(lines) if t.startswith("DefaultValue=") and t[13:].strip().isdigit())
     start = time.perf_counter()
     client.text_document_did_open(types.DidOpenTextDocumentParams(types.TextDocumentItem(uri, "eds", 1, text)))
     opened = await client.published(1) - start
-    times = []
-    for version in range(2, edits + 2):
-        new = f"DefaultValue={version % 2}"
+    exact, quick = [], []
+    for version, line in enumerate(_edit_lines(lines, edits), 2):
+        new = _edited(lines, line)
         change = types.TextDocumentContentChangePartial(
             range=types.Range(types.Position(line, 0), types.Position(line, len(lines[line]))), text=new
         )
         lines[line] = new
+        client.sent = version
         sent = time.perf_counter()
         client.text_document_did_change(
             types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version=version, uri=uri), [change])
         )
-        times.append(await client.published(version) - sent)
+        exact.append(await client.published(version) - sent)
+        if version in client.quick:
+            quick.append(client.quick[version] - sent)
     await client.shutdown_async(None)
     client.exit(None)
     await client.stop()
-    return {"open": opened * 1000, "median": statistics.median(times) * 1000, "worst": max(times) * 1000}
+    return {"open": [opened * 1000], "exact": [t * 1000 for t in exact], "quick": [t * 1000 for t in quick]}
+
+
+def cpu(path: Path, edits: int) -> dict[str, list[float]]:
+    """CPU time (ms) of one full re-check and of one quick check, in this process, for the same edits."""
+    from cantools_od.lint import LintOptions
+    from cantools_od.lsp.document import Encoding, analyse
+    from cantools_od.lsp.quick import quick_findings
+
+    data = path.read_bytes()
+    text, codec, _ = decode_as(data)
+    encoding, uri, options = Encoding(codec, data.startswith(b"\xef\xbb\xbf")), path.resolve().as_uri(), LintOptions()
+    before = analyse(uri, text, 1, encoding, options)
+    full, quick = [], []
+    for version, line in enumerate(_edit_lines(text.splitlines(), edits), 2):
+        lines = before.text.splitlines(keepends=True)
+        ending = lines[line][len(lines[line].rstrip("\r\n")) :]
+        lines[line] = _edited(lines, line) + ending
+        edited = "".join(lines)
+        started = time.process_time()
+        quick_findings(before, edited, uri, encoding, options)
+        quick.append((time.process_time() - started) * 1000)
+        started = time.process_time()
+        before = analyse(uri, edited, version, encoding, options)
+        full.append((time.process_time() - started) * 1000)
+    return {"full": full, "quick": quick}
+
+
+def _times(values: list[float]) -> str:
+    if not values:
+        return "none"
+    return f"median {statistics.median(values):.0f} ms, worst {max(values):.0f} ms"
 
 
 def main() -> None:
@@ -88,10 +142,16 @@ def main() -> None:
     parser.add_argument("--edits", type=int, default=10)
     args = parser.parse_args()
     path = args.file or _largest()
+    load = os.getloadavg()[0]
     result = asyncio.run(run(path, args.edits))
+    spent = cpu(path, args.edits)
     size = path.stat().st_size / 1000
-    print(f"{path.name} ({size:.0f} kB): open {result['open']:.0f} ms; one-line edit to diagnostics: "
-          f"median {result['median']:.0f} ms, worst {result['worst']:.0f} ms over {args.edits} edits")  # fmt: skip
+    print(f"{path.name} ({size:.0f} kB), {args.edits} one-line edits, load average {load:.1f} before, "
+          f"{os.getloadavg()[0]:.1f} after:")  # fmt: skip
+    print(f"  open to diagnostics {result['open'][0]:.0f} ms")
+    print(f"  edit to quick diagnostics: {_times(result['quick'])} ({len(result['quick'])} of {args.edits} edits)")
+    print(f"  edit to exact diagnostics: {_times(result['exact'])}")
+    print(f"  CPU per re-check in process: full {_times(spent['full'])}; quick {_times(spent['quick'])}")
 
 
 if __name__ == "__main__":

@@ -23,6 +23,8 @@ def present(section: Section) -> bool:
 
 def invalid(section: Section, key: str) -> bool:
     """The key was written, but its value could not be read (it is in `extra`; the reader reported it)."""
+    if not section.extra:
+        return False
     wanted = keys.normalize(key)
     return any(keys.normalize(written) == wanted for written in section.extra)
 
@@ -45,6 +47,14 @@ def explicit_vars(device: Device) -> Iterator[tuple[Object, int | None, Variable
         for subindex, sub in obj.subs.items():
             if not sub.implicit:
                 yield obj, subindex, sub
+
+
+def checked_vars(ctx: Context) -> list[tuple[Object, int | None, Variable]]:
+    """`explicit_vars` of the device under check, walked once for all the rules that ask."""
+    walked: list[tuple[Object, int | None, Variable]] | None = ctx.memo.get("explicit_vars")
+    if walked is None:
+        walked = ctx.memo["explicit_vars"] = list(explicit_vars(ctx.device))
+    return walked
 
 
 def where(obj: Object, subindex: int | None) -> str:

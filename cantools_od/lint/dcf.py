@@ -10,7 +10,7 @@ from ..model import Device, Object, RawSection, Severity, Variable
 from ..model.cia301.modules import has_module_section, object_section_name
 from ..model.datatypes import DOMAIN
 from . import examples as ex
-from .common import explicit_vars, file_start, given, invalid, where
+from .common import checked_vars, file_start, given, invalid, where
 from .rules import Context, Finding, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
@@ -39,7 +39,7 @@ these access types and warns.""",
     ),
 )
 def file_access(ctx: Context) -> Iterator[Finding]:
-    for obj, subindex, var in explicit_vars(ctx.device):
+    for obj, subindex, var in checked_vars(ctx):
         if not _domain(ctx.device, obj, var):
             continue  # EDS051
         access = var.access.value if var.access is not None else "rw"
@@ -71,7 +71,7 @@ DataType 0x000F); other entries have a value of their data type.""",
     ),
 )
 def file_domain(ctx: Context) -> Iterator[Finding]:
-    for obj, subindex, var in explicit_vars(ctx.device):
+    for obj, subindex, var in checked_vars(ctx):
         if _domain(ctx.device, obj, var):
             continue
         for key, path in (("UploadFile", var.upload_file), ("DownloadFile", var.download_file)):
@@ -97,7 +97,7 @@ def dcf_keys(ctx: Context) -> Iterator[Finding]:
         return
     if device.file_info.last_eds:
         yield ctx.report("EDS052", "LastEDS in an EDS", ctx.at(device.file_info, "LastEDS"))
-    for obj, subindex, var in explicit_vars(device):
+    for obj, subindex, var in checked_vars(ctx):
         for key in _DCF_KEYS:
             if given(var, key):
                 yield ctx.report("EDS052", f"{where(obj, subindex)}: {key} in an EDS", ctx.at(var, key))

@@ -12,7 +12,7 @@ from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
 from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
 from ..model.cia301.pdo import PDO_AREA
 from ..model.datatypes import STANDARD_TYPES, STATIC_TYPE_AREA, UNSIGNED8
-from .common import explicit_objects, explicit_vars, given, kind_unknown, where
+from .common import checked_vars, explicit_objects, explicit_vars, given, kind_unknown, where
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -68,7 +68,7 @@ crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
 )
 def missing_keys(ctx: Context) -> Iterator[Finding]:
     xml = ctx.device.file_format != "eds"
-    for obj, subindex, var in explicit_vars(ctx.device):
+    for obj, subindex, var in checked_vars(ctx):
         if kind_unknown(obj):
             continue  # which keys it needs depends on the ObjectType nobody could read (EDS030)
         for key in _mandatory(obj, subindex is not None):
@@ -100,7 +100,7 @@ as if they were absent.""",
     fix_safety="No automatic fix: delete the key.",
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
-    for obj, subindex, var in explicit_vars(ctx.device):
+    for obj, subindex, var in checked_vars(ctx):
         if kind_unknown(obj):
             continue  # EDS030: the ObjectType that decides which keys are allowed is unreadable
         for key in _forbidden(obj, subindex is not None):
@@ -212,7 +212,7 @@ reserved bits switch on lely-internal behaviour.""",
     ),
 )
 def obj_flags(ctx: Context) -> Iterator[Finding]:
-    for obj, subindex, var in explicit_vars(ctx.device):
+    for obj, subindex, var in checked_vars(ctx):
         if var.obj_flags is not None and var.obj_flags & ~0x3:
             message = f"{where(obj, subindex)}: ObjFlags=0x{var.obj_flags:X} sets reserved bits (only bits 0 and 1)"
             yield ctx.report("EDS023", message, ctx.value_at(var, "ObjFlags"))

@@ -26,7 +26,7 @@ from ..model import (
 from ..model.cia301.objects import DATA_TYPE_AREA
 from ..model.cia301.pdo import DUMMY_TYPES
 from ..model.datatypes import BASIC_TYPE_RANGE
-from .common import explicit_vars, where
+from .common import checked_vars, where
 from .rules import Context, Finding, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
 
@@ -75,7 +75,7 @@ def quoted_strings(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
     if device.dialect is Dialect.LELY:
         return
-    for obj, subindex, var in explicit_vars(device):
+    for obj, subindex, var in checked_vars(ctx):
         dtype = device.entry_type(var, obj)
         if dtype is None or dtype.kind is not ValueKind.STRING:
             continue
@@ -104,7 +104,7 @@ def real_values(ctx: Context) -> Iterator[Finding]:
     if device.dialect is not Dialect.LELY:
         return  # decimals: what python-canopen and CANopenNode read
     found: list[tuple[Variable, str]] = []
-    for obj, _, var in explicit_vars(device):
+    for obj, _, var in checked_vars(ctx):
         dtype = device.entry_type(var, obj)
         if dtype is not None and dtype.kind is ValueKind.REAL:
             found.extend((var, key) for key, field in _VALUE_KEYS if isinstance(getattr(var, field), float))
@@ -174,7 +174,7 @@ CANopenNode's code generators. Reported once per file.""",
 )
 def extension_comments(ctx: Context) -> Iterator[Finding]:
     found: list[Section] = []
-    for _, _, var in explicit_vars(ctx.device):
+    for _, _, var in checked_vars(ctx):
         lines = (line for block in var.comments.values() for line in block)
         if any(line.startswith((";StorageLocation", ";TPDODetectCos")) for line in lines):
             found.append(var)
@@ -203,7 +203,7 @@ mangled names. VISIBLE_STRING values are checked by EDS038.""",
 )
 def non_ascii(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
-    for owner, subindex, var in explicit_vars(device):
+    for owner, subindex, var in checked_vars(ctx):
         for key, field in _STRING_FIELDS:  # VISIBLE_STRING values: EDS038
             value = getattr(var, field)
             if isinstance(value, str) and not value.isascii():
@@ -238,7 +238,7 @@ not support it. Undefined custom types are reported by EDS080.""",
 )
 def custom_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
-    for owner, subindex, var in explicit_vars(ctx.device):
+    for owner, subindex, var in checked_vars(ctx):
         dtype = var.data_type
         # (`None in range(...)` would compare None with every number of the range)
         custom = dtype is not None and dtype in DATA_TYPE_AREA and dtype not in BASIC_TYPE_RANGE
@@ -302,7 +302,7 @@ they are not CiA 306 keys, and lely dcfchk rejects them as invalid entries.""",
     ),
 )
 def extension_keys(ctx: Context) -> Iterator[Finding]:
-    for owner, subindex, var in explicit_vars(ctx.device):
+    for owner, subindex, var in checked_vars(ctx):
         for key in var.extra:
             if keys.normalize(key) in _EXTENSION_KEYS:
                 message = f"{where(owner, subindex)} {key}: read by python-canopen only; lely rejects it"
@@ -360,7 +360,7 @@ CiA 306 does not specify how TIME_OF_DAY and TIME_DIFFERENCE values are written.
 )
 def time_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
-    for obj, subindex, var in explicit_vars(device):
+    for obj, subindex, var in checked_vars(ctx):
         dtype = device.entry_type(var, obj)
         if dtype is None or dtype.kind is not ValueKind.TIME:
             continue
@@ -387,7 +387,7 @@ and CANopenNode drop or reject such limits.""",
     ),
 )
 def nodeid_limits(ctx: Context) -> Iterator[Finding]:
-    for owner, subindex, var in explicit_vars(ctx.device):
+    for owner, subindex, var in checked_vars(ctx):
         for key, value in (("LowLimit", var.low_limit), ("HighLimit", var.high_limit)):
             if isinstance(value, NodeIdExpr):
                 message = f"{where(owner, subindex)} {key}={value.canonical()}: only lely reads $NODEID in limits"
@@ -405,7 +405,7 @@ python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key o
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
 )
 def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
-    for owner, subindex, var in explicit_vars(ctx.device):
+    for owner, subindex, var in checked_vars(ctx):
         written = var.origin is not None and var.origin.where("PDOMapping") is not None
         invalid = any(keys.normalize(k) == "pdomapping" for k in var.extra)  # the reader reported it
         if written and var.pdo_mapping is None and not invalid:
@@ -430,7 +430,7 @@ unknown option and the lely code generator drops it. Reported once per file.""",
 def obj_flags(ctx: Context) -> Iterator[Finding]:
     found = [
         (where(obj, subindex), var)
-        for obj, subindex, var in explicit_vars(ctx.device)
+        for obj, subindex, var in checked_vars(ctx)
         if var.obj_flags and not var.obj_flags & ~0x3
     ]
     if found:
@@ -460,7 +460,7 @@ a blank, so those tools read a truncated name or string. Reported once per file.
 def comment_characters(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
     found: list[tuple[str, Variable, str]] = []
-    for obj, subindex, var in explicit_vars(device):
+    for obj, subindex, var in checked_vars(ctx):
         dtype = device.entry_type(var, obj)
         fields = [*_STRING_FIELDS]
         if dtype is not None and dtype.kind is ValueKind.STRING:

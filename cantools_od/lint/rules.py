@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
 from ..model.canopennode import StackConfig
@@ -58,6 +59,8 @@ class Context:
     def __init__(self, device: Device, options: LintOptions) -> None:
         self.device = device
         self.options = options
+        self.memo: dict[str, Any] = {}
+        """What several rules derive from the device alike (walks of its entries), made once per check."""
 
     def report(self, code: str, message: str, location: Location, fix: Fix | None = None) -> Finding:
         """A finding of rule `code`, with the rule's severity."""

@@ -39,8 +39,8 @@ _ALL_NODE_IDS = tuple(range(1, 128))
 class Entry:
     """One entry with values: `limits` is where its limits come from (the object, for CompactSubObj subs).
 
-    Made anew by each rule that walks the entries (keeping them would cost a large file memory), so
-    it is a plain slotted class and its label is made only for a message."""
+    Made once per check (`entries`) and dropped with it, so it is a plain slotted class and its label
+    is made only for a message."""
 
     __slots__ = ("dtype", "implicit", "limits", "owner", "subindex", "var")
 
@@ -69,8 +69,17 @@ class Entry:
                 yield key, value
 
 
-def entries(ctx: Context) -> Iterator[Entry]:
-    """Every entry whose values are its own, once: a CompactSubObj object stands for the subs it copies into."""
+def entries(ctx: Context) -> list[Entry]:
+    """Every entry whose values are its own, once: a CompactSubObj object stands for the subs it copies into.
+
+    Walked once per check, for all the rules that ask."""
+    walked: list[Entry] | None = ctx.memo.get("value_entries")
+    if walked is None:
+        walked = ctx.memo["value_entries"] = list(_walk(ctx))
+    return walked
+
+
+def _walk(ctx: Context) -> Iterator[Entry]:
     device = ctx.device
     entry_type = device.entry_type
     for obj in device.objects.values():
@@ -160,6 +169,8 @@ def _range_problem(dtype: DataType, value: Value, nids: tuple[int, ...]) -> str 
     if bounds is None or isinstance(value, bool):
         return None
     low, high = bounds
+    if isinstance(value, int) and low <= value <= high:
+        return None  # the common case, without a node-ID to try
 
     def problem(nid: int) -> str | None:
         resolved = number(value, nid)
@@ -203,6 +214,8 @@ def relevant(ctx: Context, *values: Value | None) -> tuple[int, ...]:
 
 def _inverted(ctx: Context, entry: Entry) -> bool:
     """LowLimit > HighLimit (for every node-ID, with `$NODEID` limits)."""
+    if entry.limits.low_limit is None or entry.limits.high_limit is None:
+        return False
 
     def problem(nid: int) -> str | None:
         low, high = _limit(entry, "low_limit", nid), _limit(entry, "high_limit", nid)
@@ -245,6 +258,8 @@ def _shown(value: Value | None) -> str:
 
 
 def _outside(ctx: Context, entry: Entry, key: str, value: Value) -> str | None:
+    if entry.limits.low_limit is None and entry.limits.high_limit is None:
+        return None
     if entry.dtype is None or not entry.dtype.is_numeric or _inverted(ctx, entry):
         return None
     nids = relevant(ctx, value, entry.limits.low_limit, entry.limits.high_limit)

@@ -6,7 +6,7 @@ import re
 
 from lsprotocol import types
 
-_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)?")
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+")
 
 
 class Lines:
@@ -14,7 +14,7 @@ class Lines:
 
     def __init__(self, text: str) -> None:
         self.text = text
-        self.lines = [m.group(0) for m in _LINE.finditer(text) if m.group(0)] or [""]
+        self.lines: list[str] = _LINE.findall(text) or [""]
         if text.endswith(("\n", "\r")):
             self.lines.append("")
 

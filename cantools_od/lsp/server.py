@@ -18,6 +18,7 @@ from ..model.cia301.cobid import ALL_NODE_IDS
 from .diagnostics import diagnostics
 from .document import Analysis, Encoding, analyse, path_of
 from .positions import Lines
+from .quick import quick_findings
 
 DEBOUNCE = 0.1
 """Seconds of quiet after an edit before the document is read and linted again."""
@@ -90,6 +91,8 @@ class OdServer(LanguageServer):
         document = self.workspace.get_text_document(uri)
         text, version = document.source, document.version
         loop = asyncio.get_running_loop()
+        if state.analysis is not None:
+            await self.publish_quick(uri, state.analysis, text, version)
         try:
             analysis = await loop.run_in_executor(
                 self.worker, analyse, uri, text, version, state.encoding, self.options
@@ -104,6 +107,24 @@ class OdServer(LanguageServer):
         state.analysis, state.lines, state.cache = analysis, Lines(text), {}
         self.text_document_publish_diagnostics(
             types.PublishDiagnosticsParams(uri, diagnostics(analysis, state.lines, self.rules_url), version)
+        )
+
+    async def publish_quick(self, uri: str, before: Analysis, text: str, version: int | None) -> None:
+        """Publish the quick findings of an edit inside one object (quick.py), without a version: the
+        exact ones, published with the version, follow."""
+        state = self.open[uri]
+        try:
+            found = await asyncio.get_running_loop().run_in_executor(
+                self.worker, quick_findings, before, text, uri, state.encoding, self.options
+            )
+        except Exception as error:  # the full check answers all the same
+            print(f"cantools-od lsp: {uri}: quick check: {type(error).__name__}: {error}", file=sys.stderr)
+            return
+        if found is None or self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
+            return
+        quick = Analysis(None, text, None, found)
+        self.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri, diagnostics(quick, Lines(text), self.rules_url))
         )
 
 

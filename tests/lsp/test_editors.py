@@ -1,0 +1,210 @@
+"""The README's editor snippets, run as written in the real editors against `cantools-od lsp`.
+
+Each test makes an example EDS with two errors, opens it in the editor configured only by the README's
+snippet, waits for the diagnostics the editor shows, then repairs one line in the editor's buffer and
+waits for the diagnostics to follow. What the editor shows must be what `lint` reports for the same
+texts. A test skips, saying why, when its editor is not installed."""
+
+from __future__ import annotations
+
+import fcntl
+import json
+import os
+import pty
+import re
+import select
+import shutil
+import subprocess
+import termios
+import time
+from pathlib import Path
+
+import pytest
+
+from support import EXAMPLES, ROOT, cli_command
+
+WAIT = 60  # seconds an editor has for its work (the probes give up sooner)
+_PROBE_LUA = r"""
+local out = vim.env.PROBE_OUT
+local function seen()
+  local got = {}
+  for _, d in ipairs(vim.diagnostic.get(0)) do table.insert(got, { d.lnum + 1, tostring(d.code) }) end
+  return got
+end
+local first = vim.wait(40000, function() return #vim.diagnostic.get(0) >= 2 end, 50) and seen() or {}
+vim.api.nvim_buf_set_lines(0, tonumber(vim.env.PROBE_LINE) - 1, tonumber(vim.env.PROBE_LINE), false,
+                           { vim.env.PROBE_TEXT })
+local after = vim.wait(40000, function() return #vim.diagnostic.get(0) < #first end, 50) and seen() or {}
+local file = io.open(out, "w")
+file:write(vim.json.encode({ filetype = vim.bo.filetype, first = first, after = after }))
+file:close()
+vim.cmd("qa!")
+"""
+_PROBE_EL = r"""
+(require 'json)
+(defvar probe-first nil)
+(defvar probe-after nil)
+(defvar probe-until (+ (float-time) 40))
+(defun probe-seen ()
+  (mapcar (lambda (d)
+            (list (line-number-at-pos (flymake-diagnostic-beg d))
+                  (if (string-match "\\[\\([A-Z]+[0-9]+\\)\\]" (flymake-diagnostic-text d))
+                      (match-string 1 (flymake-diagnostic-text d)) "")))
+          (flymake-diagnostics)))
+(defun probe-done ()
+  (let ((seen (list (cons 'mode (symbol-name major-mode))
+                    (cons 'eglot (and (fboundp 'eglot-managed-p) (eglot-managed-p) t))
+                    (cons 'first (vconcat probe-first)) (cons 'after (vconcat probe-after)))))
+    (with-temp-file (getenv "PROBE_OUT") (insert (json-encode seen))))
+  (kill-emacs 0))
+(defun probe-step ()
+  "Each tick: wait for the first diagnostics, then repair the line, then wait for fewer diagnostics."
+  (let ((buffer (get-file-buffer (getenv "PROBE_FILE"))))
+    (when buffer
+      (with-current-buffer buffer
+        (let ((count (length (flymake-diagnostics))))
+          (cond ((> (float-time) probe-until) (probe-done))
+                ((and (null probe-first) (>= count 2))
+                 (setq probe-first (probe-seen))
+                 (goto-char (point-min))
+                 (forward-line (1- (string-to-number (getenv "PROBE_LINE"))))
+                 (delete-region (line-beginning-position) (line-end-position))
+                 (insert (getenv "PROBE_TEXT")))
+                ((and probe-first (< count (length probe-first)))
+                 (setq probe-after (probe-seen))
+                 (probe-done))))))))
+(run-with-timer 0.5 0.1 #'probe-step)
+"""
+
+
+def _snippets(language: str, after: str) -> list[str]:
+    """The README's ```language blocks in the part that starts with `after`, in order."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    part = readme[readme.index(after) :]
+    part = part[: part.index("\n**", 1)] if "\n**" in part[1:] else part
+    return re.findall(rf"```{language}\n(.*?)```", part, re.DOTALL)
+
+
+def _case(tmp_path: Path) -> tuple[Path, int, str, set[tuple[int, str]], set[tuple[int, str]]]:
+    """An example EDS with two defaults out of their type's range, the line (from 1) and text that
+    repair the second, and lint's (line, code) findings before and after that repair."""
+    lines = (EXAMPLES / "cia402_drive.eds").read_text(encoding="utf-8").splitlines()
+
+    def default_of(section: str) -> int:
+        header = lines.index(section)
+        return next(n for n in range(header, len(lines)) if lines[n].startswith("DefaultValue="))
+
+    lines[default_of("[1001]")] = "DefaultValue=300"  # UNSIGNED8
+    repaired = default_of("[1017]")  # UNSIGNED16
+    good = lines[repaired]
+    check = tmp_path / "check" / "drive.eds"
+    check.parent.mkdir()
+    check.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    lines[repaired] = "DefaultValue=70000"
+    path = tmp_path / "drive.eds"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path, repaired + 1, good, _lint(path), _lint(check)
+
+
+def _lint(path: Path) -> set[tuple[int, str]]:
+    done = subprocess.run([*cli_command(), "lint", "--format", "json", str(path)], capture_output=True, text=True)
+    assert done.returncode == 1, done.stderr
+    return {(int(f["line"]), str(f["code"])) for f in json.loads(done.stdout)}
+
+
+def _environment(tmp_path: Path, **extra: str) -> dict[str, str]:
+    """PATH finds this installation's `cantools-od` first, as the snippets name it."""
+    here = str(Path(cli_command()[0]).parent)
+    return {**os.environ, "PATH": here + os.pathsep + os.environ.get("PATH", ""), "HOME": str(tmp_path), **extra}
+
+
+def _nvim_version(nvim: str) -> tuple[int, int]:
+    first = subprocess.run([nvim, "--version"], capture_output=True, text=True, timeout=WAIT).stdout.split("\n")[0]
+    found = re.search(r"v(\d+)\.(\d+)", first)
+    assert found, first
+    return int(found.group(1)), int(found.group(2))
+
+
+def test_the_neovim_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Path) -> None:
+    nvim = shutil.which("nvim")
+    if nvim is None:
+        pytest.skip("Neovim (nvim) is not installed on this machine")
+    version = _nvim_version(nvim)
+    if version < (0, 7):
+        pytest.skip(f"Neovim {version[0]}.{version[1]} predates every snippet in the README (0.7 or newer)")
+    modern, older = _snippets("lua", "**Neovim**")
+    path, line, text, first, after = _case(tmp_path)
+    (tmp_path / "init.lua").write_text(modern if version >= (0, 8) else older, encoding="utf-8")
+    (tmp_path / "probe.lua").write_text(_PROBE_LUA, encoding="utf-8")
+    out = tmp_path / "seen.json"
+    environment = _environment(tmp_path, PROBE_OUT=str(out), PROBE_LINE=str(line), PROBE_TEXT=text)
+    command = [nvim, "--headless", "--clean", "-u", "init.lua", path.name, "-c", "luafile probe.lua"]
+    subprocess.run(command, cwd=tmp_path, env=environment, capture_output=True, timeout=WAIT + 30)
+    seen = json.loads(out.read_text(encoding="utf-8"))
+    assert seen["filetype"] == "eds"
+    assert {(n, code) for n, code in seen["first"]} == first
+    assert {(n, code) for n, code in seen["after"]} == after
+
+
+def _eglot_installed(emacs: str, home: Path) -> bool:
+    """Whether eglot loads in a plain start-up (built in from 29, an ELPA package before)."""
+    probe = '(progn (package-initialize) (princ (if (locate-library "eglot") "yes" "no")))'
+    done = subprocess.run(
+        [emacs, "--batch", "--eval", probe],
+        capture_output=True,
+        text=True,
+        timeout=WAIT,
+        env={**os.environ, "HOME": str(home)},
+    )
+    return done.stdout.strip().endswith("yes")
+
+
+def _in_terminal(command: list[str], cwd: Path, environment: dict[str, str]) -> None:
+    """Run a full-screen program on a pseudo-terminal of its own, reading (and dropping) what it draws."""
+    main, side = pty.openpty()
+    process = subprocess.Popen(
+        command,
+        cwd=cwd,
+        env=environment,
+        stdin=side,
+        stdout=side,
+        stderr=side,
+        start_new_session=True,
+        preexec_fn=lambda: fcntl.ioctl(0, termios.TIOCSCTTY, 0),  # the terminal Emacs opens as /dev/tty
+    )
+    os.close(side)
+    deadline = time.monotonic() + WAIT + 30
+    try:
+        while process.poll() is None and time.monotonic() < deadline:
+            if select.select([main], [], [], 0.2)[0]:
+                try:
+                    os.read(main, 65536)
+                except OSError:
+                    break
+        process.wait(timeout=max(deadline - time.monotonic(), 1))
+    finally:
+        if process.poll() is None:
+            process.kill()
+        os.close(main)
+
+
+def test_the_emacs_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Path) -> None:
+    emacs = shutil.which("emacs")
+    if emacs is None:
+        pytest.skip("Emacs is not installed on this machine")
+    if not _eglot_installed(emacs, tmp_path):
+        pytest.skip("Emacs has no eglot here (built in from Emacs 29; Debian 12's Emacs 28 needs elpa-eglot)")
+    (snippet,) = _snippets("elisp", "**Emacs**")
+    path, line, text, first, after = _case(tmp_path)
+    (tmp_path / ".emacs.d").mkdir()
+    (tmp_path / ".emacs.d" / "init.el").write_text(snippet, encoding="utf-8")
+    (tmp_path / "probe.el").write_text(_PROBE_EL, encoding="utf-8")
+    out = tmp_path / "seen.json"
+    environment = _environment(
+        tmp_path, TERM="xterm", PROBE_OUT=str(out), PROBE_LINE=str(line), PROBE_TEXT=text, PROBE_FILE=str(path)
+    )
+    _in_terminal([emacs, "-nw", "-l", str(tmp_path / "probe.el"), path.name], tmp_path, environment)
+    seen = json.loads(out.read_text(encoding="utf-8"))
+    assert seen["mode"] == "canopen-eds-mode" and seen["eglot"] is True
+    assert {(n, code) for n, code in seen["first"]} == first
+    assert {(n, code) for n, code in seen["after"]} == after

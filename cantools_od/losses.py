@@ -10,7 +10,8 @@ from .model import Device
 # Sections compared, their names as a user knows them, and the formats that keep each.
 _SECTIONS: tuple[tuple[str, str, str], ...] = (
     ("commissioning", "[DeviceComissioning] (node-ID, bit rate, node name)", "XDC and DCF keep it"),
-    ("comments", "[Comments]", "EDS and DCF keep it"),
+    # an XDD/XDC keeps them in an XML comment (see xdd/file_comments.py): no format is known to lose them
+    ("comments", "[Comments]", "EDS, DCF, XDD and XDC keep it"),
     ("dummy_usage", "[DummyUsage]", "EDS and DCF keep it"),
     ("module_sections", "the module sections (M1SubExtends, ...)", "EDS and DCF keep them"),
     ("trailing_comments", "the comment lines at the end of the file", "EDS and DCF keep them"),

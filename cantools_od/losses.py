@@ -27,10 +27,11 @@ def losses(device: Device, written: Device, fmt: str) -> list[str]:
         old, new = before.get(key), after.get(key)
         if old in (None, [], {}) or old == new:
             continue
-        how = "is not kept"
+        how = "are not kept" if keeper.endswith("them") else "is not kept"
         if isinstance(old, dict) and isinstance(new, dict):  # some fields kept: name the others
             fields = sorted(name for name in old if name not in ("extra", "comments") and old[name] != new.get(name))
             how = f"is not all kept ({', '.join(fields) or 'unknown keys'})"
+            keeper = "EDS and DCF keep every key"  # the target has the section, but no place for these keys
         found.append(f"{label} {how} in {fmt.upper()}" + ("" if fmt.upper() in keeper else f" ({keeper})"))
     kept = {section.name for section in written.other_sections}
     dropped = list(dict.fromkeys(section.name for section in device.other_sections if section.name not in kept))

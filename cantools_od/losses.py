@@ -10,7 +10,8 @@ from .model import Device
 # Sections compared, their names as a user knows them, and the formats that keep each.
 _SECTIONS: tuple[tuple[str, str, str], ...] = (
     ("commissioning", "[DeviceComissioning] (node-ID, bit rate, node name)", "XDC and DCF keep it"),
-    ("comments", "[Comments]", "EDS and DCF keep it"),
+    # an XDD/XDC keeps them in an XML comment (see xdd/file_comments.py): no format is known to lose them
+    ("comments", "[Comments]", "EDS, DCF, XDD and XDC keep it"),
     ("dummy_usage", "[DummyUsage]", "EDS and DCF keep it"),
     ("module_sections", "the module sections (M1SubExtends, ...)", "EDS and DCF keep them"),
     ("trailing_comments", "the comment lines at the end of the file", "EDS and DCF keep them"),
@@ -26,10 +27,11 @@ def losses(device: Device, written: Device, fmt: str) -> list[str]:
         old, new = before.get(key), after.get(key)
         if old in (None, [], {}) or old == new:
             continue
-        how = "is not kept"
+        how = "are not kept" if keeper.endswith("them") else "is not kept"
         if isinstance(old, dict) and isinstance(new, dict):  # some fields kept: name the others
             fields = sorted(name for name in old if name not in ("extra", "comments") and old[name] != new.get(name))
             how = f"is not all kept ({', '.join(fields) or 'unknown keys'})"
+            keeper = "EDS and DCF keep every key"  # the target has the section, but no place for these keys
         found.append(f"{label} {how} in {fmt.upper()}" + ("" if fmt.upper() in keeper else f" ({keeper})"))
     kept = {section.name for section in written.other_sections}
     dropped = list(dict.fromkeys(section.name for section in device.other_sections if section.name not in kept))

@@ -70,9 +70,8 @@ def test_every_corpus_file_through_every_format_pair(path: Path, record_property
             problems.append(f"{path.name} → {target}: {missing} lost without a word")
     record_property("losses", "; ".join(f"{s}→{t}: {what} ({n} files)" for (s, t, what), n in sorted(table.items())))
     assert not problems, "\n".join(problems[:10])
-    assert not [key for key in table if key[1] in ("eds", "dcf") and key[2] == "[Comments]"]  # INI keeps them
-    if path.name == "cia402_drive.eds":
-        assert table[("eds", "xdd", "[Comments]")] == 1 and table[("eds", "xdc", "[Comments]")] == 1
+    # INI keeps them as a section, XDD/XDC as an XML comment: no pair loses them
+    assert not [key for key in table if key[2] == "[Comments]"]
 
 
 def test_convert_says_what_xdd_cannot_hold(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -85,6 +84,8 @@ def test_convert_says_what_xdd_cannot_hold(tmp_path: Path, monkeypatch: pytest.M
     # an XDD keeps a configured device's deviceCommissioning, as CANopenEditor's .xdd files do: nothing lost
     assert "[DeviceComissioning]" not in result.output
     assert load(tmp_path / "drive.xdd").commissioning.node_id == 5
-    assert "drive.dcf: warning: [Comments] is not kept in XDD (EDS and DCF keep it)" in result.output
+    assert "[Comments]" not in result.output  # kept as an XML comment, read back as [Comments]
+    assert load(tmp_path / "drive.xdd").content()["comments"] == load(tmp_path / "drive.dcf").content()["comments"]
+    assert load(tmp_path / "drive.dcf").comments is not None
     same = CliRunner().invoke(main, ["convert", "drive.dcf", "-o", "copy.dcf"])
     assert same.exit_code == 0 and "warning" not in same.output

@@ -353,6 +353,15 @@ def _dummy_usage(section: ini.IniSection, report: Report) -> DummyUsage:
     return DummyUsage(enabled=enabled, **collected.common())
 
 
+def comments_in(text: str, report: Report) -> Comments | None:
+    """The [Comments] section of CiA 306 text: an XDD keeps the section so, in an XML comment."""
+    for section in ini.parse(text).sections:
+        if section.name.lower() == "comments":
+            _check_header(section, report)
+            return _comments(section, report)
+    return None
+
+
 def _comments(section: ini.IniSection, report: Report) -> Comments:
     collected, count, numbered = _numbered(section, report, "Lines", prefix="Line")
     return Comments(line_count=count, lines=dict(sorted(numbered.items())), **collected.common())

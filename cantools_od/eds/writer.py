@@ -7,7 +7,7 @@ from typing import Any
 
 from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
 from ..model.cia301.pdo import partner
-from ..model.device import Commissioning, DeviceInfo, FileInfo
+from ..model.device import Comments, Commissioning, DeviceInfo, FileInfo
 from . import ini
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
 from .decode import decode_as
@@ -82,10 +82,7 @@ def sections(
         entries = {f"Dummy{index:04X}": "1" if on else "0" for index, on in sorted(usage.enabled.items())}
         out.append(_with_extra("DummyUsage", entries, usage))
     if device.comments is not None:
-        comments = device.comments
-        entries = {"Lines": format_key("Lines", comments.line_count)} if comments.line_count is not None else {}
-        entries.update({f"Line{n}": text for n, text in comments.lines.items()})
-        out.append(_with_extra("Comments", entries, comments))
+        out.append(comments_section(device.comments))
     for name, attr in (
         ("MandatoryObjects", device.mandatory_objects),
         ("OptionalObjects", device.optional_objects),
@@ -125,6 +122,13 @@ def _explicit_indices(device: Device) -> set[int]:
     }
     partners = {partner(index) for index in changed}
     return written | changed | {index for index in partners if index is not None and index in device.objects}
+
+
+def comments_section(comments: Comments) -> OutSection:
+    """[Comments]: `Lines`, then `Line1`... as numbered, then the keys kept as written."""
+    entries = {"Lines": format_key("Lines", comments.line_count)} if comments.line_count is not None else {}
+    entries.update({f"Line{n}": text for n, text in comments.lines.items()})
+    return _with_extra("Comments", entries, comments)
 
 
 def _with_extra(name: str, entries: dict[str, str], section: Section) -> OutSection:

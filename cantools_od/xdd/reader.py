@@ -13,7 +13,8 @@ from typing import Any
 from ..eds.keys import MAX_DIGITS, is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
-from . import REFUSED_CODES as REFUSED_CODES  # where writers and tests have always found them
+from . import REFUSED_CODES as REFUSED_CODES
+from . import file_comments  # where writers and tests have always found them
 from . import refused as refused
 from .context import ReadContext
 from .fragments import fragment, one_line
@@ -151,6 +152,10 @@ class _Document:
         if bodies:
             self._file_info(bodies)
         self._unused_parameters()
+        marked = [(offset, text) for offset, text in root.prologue if file_comments.marked(text)]
+        if marked:
+            line = ctx.positions.at(marked[0][0])[0]
+            self.device.comments = file_comments.read_comment_block(marked[0][1], line, ctx.report)
         if self.device.commissioning is not None:
             self.device.node_id = self.device.commissioning.node_id
 

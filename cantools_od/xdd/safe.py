@@ -51,6 +51,8 @@ class Element:
     children: list[Element] = field(default_factory=list)
     text: str = ""
     parent: Element | None = None
+    prologue: tuple[tuple[int, str], ...] = ()
+    """Of the root only: the comments before it, as (byte offset of `<!--`, text between the delimiters)."""
 
     def child(self, local: str) -> Element | None:
         return next((c for c in self.children if c.local == local), None)
@@ -79,6 +81,24 @@ class _Builder(handler.ContentHandler):
         self.root: Element | None = None
         self.count = 0
         self.texts: list[list[str]] = []
+        self.prologue: list[tuple[int, str]] = []
+
+    # The lexical handler's methods: only the comments before the root element are kept.
+    def comment(self, content: str) -> None:
+        if self.root is None:
+            self.prologue.append((self._offset(), content))
+
+    def startDTD(self, name: str, public_id: str | None, system_id: str | None) -> None:
+        pass
+
+    def endDTD(self) -> None:
+        pass
+
+    def startCDATA(self) -> None:
+        pass
+
+    def endCDATA(self) -> None:
+        pass
 
     def _offset(self) -> int:
         return int(getattr(self.reader, "_parser").CurrentByteIndex)  # noqa: B009 (private in typeshed)
@@ -153,6 +173,7 @@ def parse(data: bytes) -> Element:
     reader = DefusedExpatParser(forbid_dtd=False, forbid_entities=True, forbid_external=True)
     builder = _Builder(data, reader)
     reader.setContentHandler(builder)
+    reader.setProperty(handler.property_lexical_handler, builder)
     reader.setFeature(handler.feature_external_ges, False)
     reader.setFeature(handler.feature_external_pes, False)
     source = InputSource()
@@ -169,6 +190,7 @@ def parse(data: bytes) -> Element:
         raise XmlRefused("XDD001", f"not readable XML: {error}", 0) from None
     if builder.root is None:
         raise XmlRefused("XDD001", "not well-formed XML: no root element")
+    builder.root.prologue = tuple(builder.prologue)
     return builder.root
 
 

@@ -169,7 +169,7 @@ class _Build:
             self.deferred.append((obj, sub, collected))
             return
         for field, entry in collected.deferred.items():
-            type_entry(self.device, var, obj, field, entry, self.report)
+            type_entry(self.device, var, obj, field, entry, self.report, dtype)
 
 
 def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str) -> Device:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..model import Device, Dialect, Object, SubObject, ValueKind, Variable
+from ..model import DataType, Device, Dialect, Object, SubObject, ValueKind, Variable
 from .dialect import unquote
 from .ini import Entry
 from .keys import OBJECT_KEYS, normalize
@@ -11,8 +11,18 @@ from .sections import Collected
 from .values import parse_value
 
 
-def type_entry(device: Device, var: Variable, owner: Object, field: str, entry: Entry, report: Report) -> None:
-    dtype = device.entry_type(var, owner)
+def type_entry(
+    device: Device,
+    var: Variable,
+    owner: Object,
+    field: str,
+    entry: Entry,
+    report: Report,
+    dtype: DataType | None = None,
+) -> None:
+    """Types one value; `dtype`, when given, is the entry's type (a CiA 301 type the reader already looked up)."""
+    if dtype is None:
+        dtype = device.entry_type(var, owner)
     kind = dtype.kind if dtype is not None else None
     text = entry.value
     if kind is ValueKind.STRING and device.dialect is Dialect.LELY:

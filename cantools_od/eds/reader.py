@@ -24,7 +24,7 @@ from ..model import (
     Variable,
     standard_type,
 )
-from ..model.assemble import assemble, field_defaults
+from ..model.assemble import assemble, construct, field_defaults
 from . import ini, keys
 from .compact import apply_compact_sections, expand_compact_pdo, expand_compact_sub_objects
 from .decode import decode, utf8_pieces
@@ -54,6 +54,10 @@ def _no_cyclic_gc() -> Iterator[None]:
         yield
     finally:
         if enabled:
+            # Every object made meanwhile still counts as young: the first allocation after `enable` would
+            # walk them all. Freezing and unfreezing moves them to the oldest generation without a walk.
+            gc.freeze()
+            gc.unfreeze()
             gc.enable()
 
 
@@ -175,8 +179,8 @@ class _Build:
 def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str) -> Device:
     stream = ini.Stream(pieces)
     device = Device.model_construct(
-        file_info=FileInfo(),
-        device_info=DeviceInfo(),
+        file_info=construct(FileInfo, {}),
+        device_info=construct(DeviceInfo, {}),
         dummy_usage=None,
         comments=None,
         mandatory_objects=None,
@@ -288,7 +292,7 @@ def _keyed(model: type[Any], section: ini.IniSection, table: dict[str, keys.KeyS
     rates = {int(f.split(".")[1]): fields.pop(f) for f in list(fields) if f.startswith("baud_rates.")}
     if rates:
         fields["baud_rates"] = {rate: value for rate, value in rates.items() if value is not None}
-    return model(**fields, **collected.common())
+    return construct(model, {**fields, **collected.common()})
 
 
 def _numbered(
@@ -318,8 +322,8 @@ def _object_list(section: ini.IniSection, report: Report) -> ObjectList:
             collected.extra[str(position)] = text
             continue
         entries[position] = index
-    found = ObjectList(supported_objects=count, entries=entries, **collected.common())
-    found._repeats = _repeated_positions(section)
+    found = construct(ObjectList, {"supported_objects": count, "entries": entries, **collected.common()})
+    object.__setattr__(found, "__pydantic_private__", {"_repeats": _repeated_positions(section)})
     return found
 
 
@@ -350,9 +354,9 @@ def _dummy_usage(section: ini.IniSection, report: Report) -> DummyUsage:
         if key.lower().startswith("dummy") and _HEX4.match(tail) and text in ("0", "1"):
             enabled[int(tail, 16)] = text == "1"
             del collected.extra[key]
-    return DummyUsage(enabled=enabled, **collected.common())
+    return construct(DummyUsage, {"enabled": enabled, **collected.common()})
 
 
 def _comments(section: ini.IniSection, report: Report) -> Comments:
     collected, count, numbered = _numbered(section, report, "Lines", prefix="Line")
-    return Comments(line_count=count, lines=dict(sorted(numbered.items())), **collected.common())
+    return construct(Comments, {"line_count": count, "lines": dict(sorted(numbered.items())), **collected.common()})

@@ -6,7 +6,7 @@ from functools import lru_cache
 from typing import Any, NoReturn
 
 from ..model import AccessType, ObjectKind, Origin, RawSection
-from ..model.assemble import assemble, field_defaults
+from ..model.assemble import assemble, construct, field_defaults
 from .ini import Entry, IniSection
 from .keys import KeySpec, Kind, normalize
 from .report import Report
@@ -162,4 +162,10 @@ def convert(text: str, kind: Kind) -> Any:
 def raw_section(section: IniSection, report: Report) -> RawSection:
     """A section kept as text, keys in file order."""
     collected = collect(section, {}, report)
-    return RawSection(name=section.name, entries=collected.extra, comments=collected.comments, origin=collected.origin)
+    fields = {
+        "name": section.name,
+        "entries": collected.extra,
+        "comments": collected.comments,
+        "origin": collected.origin,
+    }
+    return construct(RawSection, fields)

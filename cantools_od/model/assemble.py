@@ -57,6 +57,25 @@ def _all_fields(cls: type[BaseModel]) -> set[str]:
     return set(cls.model_fields)
 
 
+def construct(cls: type[M], values: dict[str, Any]) -> M:
+    """An instance of `cls` from `values` already of the right type, its other fields at their defaults (made
+    fresh where a field has a default factory): `assemble` for classes with few instances, without validation
+    (which would build the class's schema on first use: a cost at every start of the command line)."""
+    defaults, factories = _class_defaults(cls)
+    for name, factory in factories:
+        if name not in values:
+            values[name] = factory()
+    return assemble(cls, values, defaults)
+
+
+@cache
+def _class_defaults(cls: type[BaseModel]) -> tuple[dict[str, Any], tuple[tuple[str, Any], ...]]:
+    factories = tuple((name, info.default_factory) for name, info in cls.model_fields.items() if info.default_factory)
+    made = {name for name, _ in factories}  # these take the place of their factory's value, in field order
+    defaults = {name: (None if name in made else value) for name, value in field_defaults(cls).items()}
+    return defaults, factories
+
+
 def field_defaults(cls: type[BaseModel]) -> dict[str, Any]:
     """The default of every field of `cls` (None where a field has none)."""
     return {name: (None if info.is_required() else info.default) for name, info in cls.model_fields.items()}

@@ -31,9 +31,9 @@ from .decode import decode, utf8_pieces
 from .dialect import DialectEvidence, directive
 from .report import Report
 from .sections import Collected, collect, raw_section
-from .storage import read_storage_groups
-from .typed_values import type_entry, type_values
-from .values import parse_int
+from .storage import PREFIX, read_storage_groups
+from .typed_values import store, type_values
+from .values import parse_int, parse_value
 
 _OBJECT_SECTION = re.compile(
     r"([0-9a-fA-F]{1,4})(?:[sS][uU][bB]([0-9a-fA-F]{1,3})|(name|value|denotation|objectlinks))?\Z",
@@ -42,6 +42,7 @@ _OBJECT_SECTION = re.compile(
 _HEX4 = re.compile(r"[0-9a-fA-F]{4}\Z")
 _MODULE_SECTION = re.compile(r"(?:m\d+\D.*|supportedmodules|connectedmodules)\Z", re.IGNORECASE)
 _SUB_DEFAULTS = field_defaults(SubObject)
+STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group comment: a scan spares a walk
 _OBJECT_DEFAULTS = field_defaults(Object)
 
 
@@ -66,12 +67,12 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
         repeated = ini.repeated_section_names(data)
         try:
             report = Report(file)
-            device = _build(utf8_pieces(data), repeated, report, file)
+            device = _build(utf8_pieces(data), repeated, report, file, STORAGE_MARK in data)
         except UnicodeDecodeError:  # read again as a whole, in the fallback encoding
             report = Report(file)
             text, encoding_note = decode(data)
             report.warning("EDS100", encoding_note or "not UTF-8", 1, 1)
-            device = _build([text], ini.repeated_section_names(text), report, file)
+            device = _build([text], ini.repeated_section_names(text), report, file, STORAGE_MARK in data)
         if dcf is not None:
             device.is_dcf = dcf
         elif file.lower().endswith(".dcf"):
@@ -147,7 +148,9 @@ class _Build:
             self.compact.append((index, match.group(3).lower(), section))
         else:
             collected = collect(section, keys.OBJECT_KEYS, report)
-            fields = {"index": index, "subs": {}, **collected.fields, **collected.common(share_empty=True)}
+            fields = collected.shared_fields()
+            fields["index"] = index
+            fields["subs"] = {}
             obj = assemble(Object, fields, _OBJECT_DEFAULTS)
             device.objects[index] = obj
             self.type_or_defer(obj, None, collected)
@@ -160,7 +163,7 @@ class _Build:
                 collected.extra[spelling] = next(
                     e.value for e in section.entries if keys.normalize(e.key) == spelling.lower()
                 )
-        sub = assemble(SubObject, {**collected.fields, **collected.common(share_empty=True)}, _SUB_DEFAULTS)
+        sub = assemble(SubObject, collected.shared_fields(), _SUB_DEFAULTS)
         parent.subs[subindex] = sub
         self.type_or_defer(parent, sub, collected)
 
@@ -172,11 +175,18 @@ class _Build:
         if dtype is None or dtype.kind is ValueKind.STRING:
             self.deferred.append((obj, sub, collected))
             return
+        # `type_entry` for a CiA 301 type that is no string, written out: this runs for most values of a file.
+        kind, bits, name, fields = dtype.kind, dtype.bits, dtype.name, var.__dict__
         for field, entry in collected.deferred.items():
-            type_entry(self.device, var, obj, field, entry, self.report, dtype)
+            parsed = parse_value(entry.value, kind, bits, name)
+            if parsed.notes or parsed.comment is not None:
+                store(var, field, entry, parsed, self.report)
+            else:
+                fields[field] = parsed.value
 
 
-def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str) -> Device:
+def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str, storage: bool) -> Device:
+    """The device; `storage`: the text may hold CANopenNode's storage-group comments (see storage.py)."""
     stream = ini.Stream(pieces)
     device = Device.model_construct(
         file_info=construct(FileInfo, {}),
@@ -224,7 +234,8 @@ def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str)
     apply_compact_sections(device, build.compact, report)
     expand_compact_pdo(device)
     device.objects = dict(sorted(device.objects.items()))
-    read_storage_groups(device)
+    if storage:
+        read_storage_groups(device)
     if device.commissioning is not None:
         device.node_id = device.commissioning.node_id
         device.is_dcf = True

@@ -42,10 +42,17 @@ class Collected:
         self.origin = origin
         self.deferred: dict[str, Entry] = {}  # typed values, read once the data type is known
 
-    def common(self, share_empty: bool = False) -> dict[str, Any]:
-        """The fields every section has; with `share_empty`, empty ones are the shared `NONE`."""
-        if share_empty:
-            return {"extra": self.extra or NONE, "comments": self.comments or NONE, "origin": self.origin}
+    def shared_fields(self) -> dict[str, Any]:
+        """`fields` (itself, no copy) with the common ones added, empty ones the shared `NONE`: an object's or
+        sub-object's values, made once per section."""
+        fields = self.fields
+        fields["extra"] = self.extra or NONE
+        fields["comments"] = self.comments or NONE
+        fields["origin"] = self.origin
+        return fields
+
+    def common(self) -> dict[str, Any]:
+        """The fields every section has."""
         return {"extra": self.extra, "comments": self.comments, "origin": self.origin}
 
 

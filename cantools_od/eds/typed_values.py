@@ -2,27 +2,17 @@
 
 from __future__ import annotations
 
-from ..model import DataType, Device, Dialect, Object, SubObject, ValueKind, Variable
+from ..model import Device, Dialect, Object, SubObject, ValueKind, Variable
 from .dialect import unquote
 from .ini import Entry
 from .keys import OBJECT_KEYS, normalize
 from .report import Report
 from .sections import Collected
-from .values import parse_value
+from .values import Parsed, parse_value
 
 
-def type_entry(
-    device: Device,
-    var: Variable,
-    owner: Object,
-    field: str,
-    entry: Entry,
-    report: Report,
-    dtype: DataType | None = None,
-) -> None:
-    """Types one value; `dtype`, when given, is the entry's type (a CiA 301 type the reader already looked up)."""
-    if dtype is None:
-        dtype = device.entry_type(var, owner)
+def type_entry(device: Device, var: Variable, owner: Object, field: str, entry: Entry, report: Report) -> None:
+    dtype = device.entry_type(var, owner)
     kind = dtype.kind if dtype is not None else None
     text = entry.value
     if kind is ValueKind.STRING and device.dialect is Dialect.LELY:
@@ -31,6 +21,11 @@ def type_entry(
             var.__dict__[field] = unquoted  # the reader's own instance: no validation to run
             return
     parsed = parse_value(text, kind, dtype.bits if dtype else None, dtype.name if dtype else "this type")
+    store(var, field, entry, parsed, report)
+
+
+def store(var: Variable, field: str, entry: Entry, parsed: Parsed, report: Report) -> None:
+    """A typed value into the reader's own instance (no validation to run), with its notes reported."""
     var.__dict__[field] = parsed.value
     for code, severity, message in parsed.notes:
         report.add(code, severity, f"{entry.key}: {message}", entry.line, entry.value_col)

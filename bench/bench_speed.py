@@ -24,6 +24,7 @@ import argparse
 import json
 import os
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -33,7 +34,6 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_load import DEFAULT_CORPUS, canopen_readable, corpus_files, load_all_ours, load_all_theirs, ours_readable
 from bench_scale import command as cli
-from bench_sizes import run_once
 from synthetic_eds import synthetic_eds
 
 REPO = Path(__file__).resolve().parents[1]
@@ -72,8 +72,24 @@ def load_ratio(name: str, files: list[Path], rounds: int) -> Row:
     }
 
 
+# Runs one command and prints its figures. A process forked from this one would count the RSS it inherits (the
+# corpus loaded here) as its own peak, so the commands are started from a small interpreter instead.
+_RUNNER = """
+import json, sys
+sys.path.insert(0, sys.argv[1])
+print(json.dumps(run_once(json.loads(sys.argv[2]))))
+"""
+
+
+def _run_lean(command: list[str]) -> tuple[float, int, int, float]:
+    bench = str(Path(__file__).resolve().parent)
+    shown = subprocess.run([sys.executable, "-c", _RUNNER, bench, json.dumps(command)], capture_output=True, check=True)
+    wall, rss, status, cpu = json.loads(shown.stdout)
+    return float(wall), int(rss), int(status), float(cpu)
+
+
 def process(name: str, args: list[str], rounds: int, size: int = 0) -> Row:
-    runs = [run_once([*cli(), *args]) for _ in range(rounds)]
+    runs = [_run_lean([*cli(), *args]) for _ in range(rounds)]
     row: Row = {
         "row": name,
         "cpu_s": round(statistics.median(r[3] for r in runs), 3),

@@ -77,6 +77,7 @@ def load_ratio(name: str, files: list[Path], rounds: int) -> Row:
 _RUNNER = """
 import json, sys
 sys.path.insert(0, sys.argv[1])
+from bench_sizes import run_once
 print(json.dumps(run_once(json.loads(sys.argv[2]))))
 """
 

@@ -42,8 +42,8 @@ _OBJECT_SECTION = re.compile(
 _HEX4 = re.compile(r"[0-9a-fA-F]{4}\Z")
 _MODULE_SECTION = re.compile(r"(?:m\d+\D.*|supportedmodules|connectedmodules)\Z", re.IGNORECASE)
 _SUB_DEFAULTS = field_defaults(SubObject)
-STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group comment: a scan spares a walk
 _OBJECT_DEFAULTS = field_defaults(Object)
+STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group comment: a scan spares a walk
 
 
 @contextmanager
@@ -56,9 +56,11 @@ def _no_cyclic_gc() -> Iterator[None]:
     finally:
         if enabled:
             # Every object made meanwhile still counts as young: the first allocation after `enable` would
-            # walk them all. Freezing and unfreezing moves them to the oldest generation without a walk.
-            gc.freeze()
-            gc.unfreeze()
+            # walk them all. Freezing and unfreezing moves them to the oldest generation without a walk (not
+            # when the program froze objects of its own: unfreezing would release those too).
+            if not gc.get_freeze_count():
+                gc.freeze()
+                gc.unfreeze()
             gc.enable()
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from ..model import AccessType, Device, NodeIdExpr, Object, ObjectKind, Origin, SubObject
+from ..model.assemble import construct
 from ..model.cia301.cobid import VALID
 from ..model.cia301.pdo import (
     COMM_BASE,
@@ -158,7 +159,7 @@ def expand_compact_pdo(device: Device) -> None:
         number = 0
         while missing and number < PDO_SPAN:
             if base + number not in device.objects:
-                cob_id = NodeIdExpr(offset=predefined[number]) if number < len(predefined) else VALID
+                cob_id = construct(NodeIdExpr, {"offset": predefined[number]}) if number < len(predefined) else VALID
                 device.objects[base + number] = _comm_object(base + number, mask, cob_id, direction)
                 if map_base + number not in device.objects:
                     device.objects[map_base + number] = _mapping_object(map_base + number, direction)

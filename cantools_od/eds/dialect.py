@@ -64,12 +64,11 @@ def _lely(section: IniSection) -> bool:
 
 
 def _other(section: IniSection) -> Dialect | None:
-    if any(c.startswith(_CANOPENNODE_COMMENTS) for c in section.comments):
+    if section.comments and any(map(_canopennode_comment, section.comments)):
         return Dialect.CANOPENNODE
-    for entry in section.entries:
-        if entry.comments and entry.comments[0].startswith(_CANOPENNODE_COMMENTS):
+    for key, value, _, _, _, above, _ in section.entries:  # once per entry of a file: cheap tests first
+        if above and _canopennode_comment(above[0]):
             return Dialect.CANOPENNODE
-        key, value = entry.key, entry.value
         if len(key) == 9 and key.lower() == "createdby" and _CANOPENNODE_TOOL.search(value):
             return Dialect.CANOPENNODE
         if "$" in value and _NODEID_LAST.search(value):
@@ -79,7 +78,8 @@ def _other(section: IniSection) -> Dialect | None:
     return None
 
 
-_CANOPENNODE_COMMENTS = (";StorageLocation", ";TPDODetectCos")
+# Comments only CANopenNode's tools write (a match at the start, as `str.startswith`).
+_canopennode_comment = re.compile(";StorageLocation|;TPDODetectCos").match
 _CANOPENNODE_TOOL = re.compile("canopen(node|editor)|libedssharp", re.IGNORECASE)
 
 

@@ -24,16 +24,16 @@ from ..model import (
     Variable,
     standard_type,
 )
-from ..model.assemble import assemble, field_defaults
+from ..model.assemble import assemble, construct, field_defaults
 from . import ini, keys
 from .compact import apply_compact_sections, expand_compact_pdo, expand_compact_sub_objects
 from .decode import decode, utf8_pieces
 from .dialect import DialectEvidence, directive
 from .report import Report
 from .sections import Collected, collect, raw_section
-from .storage import read_storage_groups
-from .typed_values import type_entry, type_values
-from .values import parse_int
+from .storage import PREFIX, read_storage_groups
+from .typed_values import store, type_values
+from .values import parse_int, parse_value
 
 _OBJECT_SECTION = re.compile(
     r"([0-9a-fA-F]{1,4})(?:[sS][uU][bB]([0-9a-fA-F]{1,3})|(name|value|denotation|objectlinks))?\Z",
@@ -43,6 +43,7 @@ _HEX4 = re.compile(r"[0-9a-fA-F]{4}\Z")
 _MODULE_SECTION = re.compile(r"(?:m\d+\D.*|supportedmodules|connectedmodules)\Z", re.IGNORECASE)
 _SUB_DEFAULTS = field_defaults(SubObject)
 _OBJECT_DEFAULTS = field_defaults(Object)
+STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group comment: a scan spares a walk
 
 
 @contextmanager
@@ -54,6 +55,12 @@ def _no_cyclic_gc() -> Iterator[None]:
         yield
     finally:
         if enabled:
+            # Every object made meanwhile still counts as young: the first allocation after `enable` would
+            # walk them all. Freezing and unfreezing moves them to the oldest generation without a walk (not
+            # when the program froze objects of its own: unfreezing would release those too).
+            if not gc.get_freeze_count():
+                gc.freeze()
+                gc.unfreeze()
             gc.enable()
 
 
@@ -62,12 +69,12 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
         repeated = ini.repeated_section_names(data)
         try:
             report = Report(file)
-            device = _build(utf8_pieces(data), repeated, report, file)
+            device = _build(utf8_pieces(data), repeated, report, file, STORAGE_MARK in data)
         except UnicodeDecodeError:  # read again as a whole, in the fallback encoding
             report = Report(file)
             text, encoding_note = decode(data)
             report.warning("EDS100", encoding_note or "not UTF-8", 1, 1)
-            device = _build([text], ini.repeated_section_names(text), report, file)
+            device = _build([text], ini.repeated_section_names(text), report, file, STORAGE_MARK in data)
         if dcf is not None:
             device.is_dcf = dcf
         elif file.lower().endswith(".dcf"):
@@ -143,7 +150,9 @@ class _Build:
             self.compact.append((index, match.group(3).lower(), section))
         else:
             collected = collect(section, keys.OBJECT_KEYS, report)
-            fields = {"index": index, "subs": {}, **collected.fields, **collected.common(share_empty=True)}
+            fields = collected.shared_fields()
+            fields["index"] = index
+            fields["subs"] = {}
             obj = assemble(Object, fields, _OBJECT_DEFAULTS)
             device.objects[index] = obj
             self.type_or_defer(obj, None, collected)
@@ -156,7 +165,7 @@ class _Build:
                 collected.extra[spelling] = next(
                     e.value for e in section.entries if keys.normalize(e.key) == spelling.lower()
                 )
-        sub = assemble(SubObject, {**collected.fields, **collected.common(share_empty=True)}, _SUB_DEFAULTS)
+        sub = assemble(SubObject, collected.shared_fields(), _SUB_DEFAULTS)
         parent.subs[subindex] = sub
         self.type_or_defer(parent, sub, collected)
 
@@ -168,15 +177,22 @@ class _Build:
         if dtype is None or dtype.kind is ValueKind.STRING:
             self.deferred.append((obj, sub, collected))
             return
+        # `type_entry` for a CiA 301 type that is no string, written out: this runs for most values of a file.
+        kind, bits, name, fields = dtype.kind, dtype.bits, dtype.name, var.__dict__
         for field, entry in collected.deferred.items():
-            type_entry(self.device, var, obj, field, entry, self.report)
+            parsed = parse_value(entry.value, kind, bits, name)
+            if parsed.notes or parsed.comment is not None:
+                store(var, field, entry, parsed, self.report)
+            else:
+                fields[field] = parsed.value
 
 
-def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str) -> Device:
+def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str, storage: bool) -> Device:
+    """The device; `storage`: the text may hold CANopenNode's storage-group comments (see storage.py)."""
     stream = ini.Stream(pieces)
     device = Device.model_construct(
-        file_info=FileInfo(),
-        device_info=DeviceInfo(),
+        file_info=construct(FileInfo, {}),
+        device_info=construct(DeviceInfo, {}),
         dummy_usage=None,
         comments=None,
         mandatory_objects=None,
@@ -220,7 +236,8 @@ def _build(pieces: Iterable[str], repeated: set[str], report: Report, file: str)
     apply_compact_sections(device, build.compact, report)
     expand_compact_pdo(device)
     device.objects = dict(sorted(device.objects.items()))
-    read_storage_groups(device)
+    if storage:
+        read_storage_groups(device)
     if device.commissioning is not None:
         device.node_id = device.commissioning.node_id
         device.is_dcf = True
@@ -288,7 +305,7 @@ def _keyed(model: type[Any], section: ini.IniSection, table: dict[str, keys.KeyS
     rates = {int(f.split(".")[1]): fields.pop(f) for f in list(fields) if f.startswith("baud_rates.")}
     if rates:
         fields["baud_rates"] = {rate: value for rate, value in rates.items() if value is not None}
-    return model(**fields, **collected.common())
+    return construct(model, {**fields, **collected.common()})
 
 
 def _numbered(
@@ -318,8 +335,8 @@ def _object_list(section: ini.IniSection, report: Report) -> ObjectList:
             collected.extra[str(position)] = text
             continue
         entries[position] = index
-    found = ObjectList(supported_objects=count, entries=entries, **collected.common())
-    found._repeats = _repeated_positions(section)
+    found = construct(ObjectList, {"supported_objects": count, "entries": entries, **collected.common()})
+    object.__setattr__(found, "__pydantic_private__", {"_repeats": _repeated_positions(section)})
     return found
 
 
@@ -350,7 +367,7 @@ def _dummy_usage(section: ini.IniSection, report: Report) -> DummyUsage:
         if key.lower().startswith("dummy") and _HEX4.match(tail) and text in ("0", "1"):
             enabled[int(tail, 16)] = text == "1"
             del collected.extra[key]
-    return DummyUsage(enabled=enabled, **collected.common())
+    return construct(DummyUsage, {"enabled": enabled, **collected.common()})
 
 
 def comments_in(text: str, report: Report) -> Comments | None:
@@ -364,4 +381,4 @@ def comments_in(text: str, report: Report) -> Comments | None:
 
 def _comments(section: ini.IniSection, report: Report) -> Comments:
     collected, count, numbered = _numbered(section, report, "Lines", prefix="Line")
-    return Comments(line_count=count, lines=dict(sorted(numbered.items())), **collected.common())
+    return construct(Comments, {"line_count": count, "lines": dict(sorted(numbered.items())), **collected.common()})

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from ..model import Diagnostic, Location, Severity
+from ..model import Diagnostic, Severity
+from ..model.source import diagnostic, location
 
 
 class Report:
@@ -15,8 +16,7 @@ class Report:
         """Texts read so far, so that a text written many times is held once."""
 
     def add(self, code: str, severity: Severity, message: str, line: int = 0, column: int = 0) -> None:
-        location = Location(file=self.file, line=line, column=column)
-        self.diagnostics.append(Diagnostic(code=code, severity=severity, message=message, location=location))
+        self.diagnostics.append(diagnostic(code, severity, message, location(self.file, line, column)))
 
     def error(self, code: str, message: str, line: int = 0, column: int = 0) -> None:
         self.add(code, Severity.ERROR, message, line, column)

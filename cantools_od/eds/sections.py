@@ -6,7 +6,7 @@ from functools import lru_cache
 from typing import Any, NoReturn
 
 from ..model import AccessType, ObjectKind, Origin, RawSection
-from ..model.assemble import assemble, field_defaults
+from ..model.assemble import assemble, construct, field_defaults
 from .ini import Entry, IniSection
 from .keys import KeySpec, Kind, normalize
 from .report import Report
@@ -27,6 +27,7 @@ class _Empty(dict[str, Any]):
 
 
 NONE: dict[str, Any] = _Empty()
+_VALUE, _STR = Kind.VALUE, Kind.STR
 
 
 class Collected:
@@ -41,10 +42,17 @@ class Collected:
         self.origin = origin
         self.deferred: dict[str, Entry] = {}  # typed values, read once the data type is known
 
-    def common(self, share_empty: bool = False) -> dict[str, Any]:
-        """The fields every section has; with `share_empty`, empty ones are the shared `NONE`."""
-        if share_empty:
-            return {"extra": self.extra or NONE, "comments": self.comments or NONE, "origin": self.origin}
+    def shared_fields(self) -> dict[str, Any]:
+        """`fields` (itself, no copy) with the common ones added, empty ones the shared `NONE`: an object's or
+        sub-object's values, made once per section."""
+        fields = self.fields
+        fields["extra"] = self.extra or NONE
+        fields["comments"] = self.comments or NONE
+        fields["origin"] = self.origin
+        return fields
+
+    def common(self) -> dict[str, Any]:
+        """The fields every section has."""
         return {"extra": self.extra, "comments": self.comments, "origin": self.origin}
 
 
@@ -55,53 +63,80 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
         collected.comments[""] = section.comments
     layout: dict[str, tuple[int, int, int]] = {}  # key positions relative to the header line
     spelled: dict[str, str] = {}  # canonical name → the spelling its last entry used, when not canonical
-    written: dict[str, str] = {}  # canonical name → the spelling its earlier entry used
+    fields, extra, comments, deferred = collected.fields, collected.extra, collected.comments, collected.deferred
+    strings = report.strings
+    header = section.line
+    # This loop runs once per entry of the file: locals and tuple unpacking rather than attribute look-ups.
     for entry in section.entries:
-        spec = table.get(normalize(entry.key))
-        name = spec[0] if spec is not None else entry.key
+        key, value, line, key_col, value_col, above, _ = entry
+        spec = table.get(normalize(key))
+        name = spec[0] if spec is not None else key
         if name in layout:
-            report.warning(
-                "EDS002",
-                f"[{section.name}] {entry.key} given again (first on line {section.line + layout[name][0]}); "
-                "the last one counts",
-                entry.line,
-                entry.key_col,
-            )
-            collected.extra.pop(written[name], None)  # the earlier value, whichever form it took
-            if spec is not None:
-                collected.fields.pop(spec[1], None)
-                collected.deferred.pop(spec[1], None)
-        layout[name] = (entry.line - section.line, entry.key_col, entry.value_col)
-        written[name] = entry.key
-        if spec is not None and entry.key != name:
-            spelled[name] = entry.key
-        else:
-            spelled.pop(name, None)  # a repeated key, spelled right the last time
-        if entry.comments:
-            collected.comments[name] = list(entry.comments)
+            _repeated(section, entry, name, spec, collected, report, layout[name][0])
+            spelled.pop(name, None)  # spelled again below if this entry is not spelled right either
+        layout[name] = (line - header, key_col, value_col)
+        if above:
+            comments[name] = list(above)
         if spec is None:
-            collected.extra[entry.key] = entry.value
+            extra[key] = value
             continue
+        if key != name:
+            spelled[name] = key
         _, field, kind = spec
-        if kind is Kind.VALUE:
-            collected.deferred[field] = entry
-            continue
-        if kind is Kind.STR:
+        if kind is _VALUE:
+            deferred[field] = entry
+        elif kind is _STR:
             # Names repeat across sections ("Highest sub-index supported"): one string for each.
-            collected.fields[field] = report.strings.setdefault(entry.value, entry.value)
-            continue
-        try:
-            value = convert(entry.value, kind)
-        except ValueError as error:
-            report.error("EDS030", f"{entry.key}: {error}", entry.line, entry.value_col)
-            collected.extra[entry.key] = entry.value
-            continue
-        collected.fields[field] = value
+            fields[field] = strings.setdefault(value, value)
+        else:
+            try:
+                fields[field] = convert(value, kind)
+            except ValueError as error:
+                report.error("EDS030", f"{key}: {error}", line, value_col)
+                extra[key] = value
     # Sections written by one tool share few layouts: one dict each saves a dict of tuples per section.
-    origin.layout = report.layouts.setdefault(tuple(layout.items()), layout)
+    # Set in the reader's own instance directly: pydantic's __setattr__ costs more than the rest of a line.
+    origin.__dict__["layout"] = report.layouts.setdefault(tuple(layout.items()), layout)
     if spelled:
-        origin.spelled = spelled
+        origin.__dict__["spelled"] = spelled
     return collected
+
+
+def _repeated(
+    section: IniSection,
+    entry: Entry,
+    name: str,
+    spec: KeySpec | None,
+    collected: Collected,
+    report: Report,
+    offset: int,
+) -> None:
+    """A key given again: warn, and drop the earlier value, whichever form it took."""
+    report.warning(
+        "EDS002",
+        f"[{section.name}] {entry.key} given again (first on line {section.line + offset}); the last one counts",
+        entry.line,
+        entry.key_col,
+    )
+    earlier = _last_spelling(section, entry, name, spec)
+    collected.extra.pop(earlier, None)
+    if spec is not None:
+        collected.fields.pop(spec[1], None)
+        collected.deferred.pop(spec[1], None)
+
+
+def _last_spelling(section: IniSection, entry: Entry, name: str, spec: KeySpec | None) -> str:
+    """How the last entry before `entry` that gives key `name` spelled it (an unknown key is its own name)."""
+    if spec is None:
+        return name
+    found = name
+    wanted = normalize(name)
+    for earlier in section.entries:
+        if earlier is entry:
+            break
+        if normalize(earlier.key) == wanted:
+            found = earlier.key
+    return found
 
 
 @lru_cache(maxsize=4096)  # files repeat a few texts per key thousands of times; errors are not kept
@@ -134,4 +169,10 @@ def convert(text: str, kind: Kind) -> Any:
 def raw_section(section: IniSection, report: Report) -> RawSection:
     """A section kept as text, keys in file order."""
     collected = collect(section, {}, report)
-    return RawSection(name=section.name, entries=collected.extra, comments=collected.comments, origin=collected.origin)
+    fields = {
+        "name": section.name,
+        "entries": collected.extra,
+        "comments": collected.comments,
+        "origin": collected.origin,
+    }
+    return construct(RawSection, fields)

@@ -8,7 +8,7 @@ from .ini import Entry
 from .keys import OBJECT_KEYS, normalize
 from .report import Report
 from .sections import Collected
-from .values import parse_value
+from .values import Parsed, parse_value
 
 
 def type_entry(device: Device, var: Variable, owner: Object, field: str, entry: Entry, report: Report) -> None:
@@ -21,6 +21,11 @@ def type_entry(device: Device, var: Variable, owner: Object, field: str, entry: 
             var.__dict__[field] = unquoted  # the reader's own instance: no validation to run
             return
     parsed = parse_value(text, kind, dtype.bits if dtype else None, dtype.name if dtype else "this type")
+    store(var, field, entry, parsed, report)
+
+
+def store(var: Variable, field: str, entry: Entry, parsed: Parsed, report: Report) -> None:
+    """A typed value into the reader's own instance (no validation to run), with its notes reported."""
     var.__dict__[field] = parsed.value
     for code, severity, message in parsed.notes:
         report.add(code, severity, f"{entry.key}: {message}", entry.line, entry.value_col)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from ..model import NodeIdExpr, RawValue, Severity, TimeValue, Value, ValueKind
+from ..model.assemble import construct
 from .keys import MAX_DIGITS
 
 Note = tuple[str, Severity, str]
@@ -135,7 +136,7 @@ def _parse_integer_expr(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
         notes.append(("EDS033", Severity.ERROR, f"{text!r}: $NODEID may only be added to"))
     if text.count("$") == 1 and "$NODEID" not in text:
         notes.append(("EDS033", Severity.WARNING, f"{text!r}: write $NODEID in upper case"))
-    return NodeIdExpr(offset=total, text=text), notes
+    return construct(NodeIdExpr, {"offset": total, "text": text}), notes
 
 
 def parse_int(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
@@ -158,7 +159,7 @@ def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: 
         return Parsed(None)
     if len(text) > _LONGEST_NUMBER and kind in _NUMBERS:  # quoted in no message: it may be megabytes
         why = f"a value of {len(text)} characters; no {type_name} is written so long"
-        return Parsed(RawValue(text=text), (("EDS030", Severity.ERROR, why),))
+        return Parsed(construct(RawValue, {"text": text}), (("EDS030", Severity.ERROR, why),))
     try:
         return _parse(text, kind, bits, type_name)
     except ValueError as error:
@@ -175,8 +176,8 @@ def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: 
                 return Parsed(retry.value, (*retry.notes, note), comment)
         if type_name == "DOMAIN" and text in ("0", "0x0", "0x00"):  # CANopenNode's "empty" DOMAIN
             why = f"{text!r} for DOMAIN: CANopenNode's way to say empty; other tools reject it"
-            return Parsed(RawValue(text=text), (("EDS030", Severity.WARNING, why),))
-        return Parsed(RawValue(text=text), (("EDS030", Severity.ERROR, f"{error} for {type_name}"),))
+            return Parsed(construct(RawValue, {"text": text}), (("EDS030", Severity.WARNING, why),))
+        return Parsed(construct(RawValue, {"text": text}), (("EDS030", Severity.ERROR, f"{error} for {type_name}"),))
 
 
 def _parse(text: str, kind: ValueKind | None, bits: int | None, type_name: str) -> Parsed:
@@ -219,14 +220,14 @@ def _parse(text: str, kind: ValueKind | None, bits: int | None, type_name: str) 
             days, _ = parse_int(parts[0])
             ms, _ = parse_int(parts[1])
             if isinstance(days, int) and isinstance(ms, int):
-                return Parsed(TimeValue(days=days, ms=ms))
+                return Parsed(construct(TimeValue, {"days": days, "ms": ms}))
         number, notes = parse_int(text)
         if not isinstance(number, int):
             raise ValueError(f"{text!r} is not a time value")
         return Parsed(TimeValue.from_bits(number), tuple(notes))
     if kind is ValueKind.STRING or kind is ValueKind.UNICODE:
         return Parsed(text)
-    return Parsed(RawValue(text=text))  # records and unknown types: no value syntax
+    return Parsed(construct(RawValue, {"text": text}))  # records and unknown types: no value syntax
 
 
 def _parse_real(text: str, bits: int) -> float:

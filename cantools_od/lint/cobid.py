@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from ..model import NodeIdExpr, Severity, standard_type
+from ..model.assemble import construct
 from ..model.cia301.cobid import (
     BASE_29BIT,
     EXTENDED,
@@ -174,7 +175,7 @@ def check_predefined(ctx: Context) -> Iterator[Finding]:
         elif value & VALID and not value & BASE_29BIT:
             continue
         else:
-            wanted = NodeIdExpr(offset=(value & (VALID | RTR)) | base).canonical()
+            wanted = construct(NodeIdExpr, {"offset": (value & (VALID | RTR)) | base}).canonical()
             problem = f"0x{value:X} fits one node-ID only; write {wanted}"
         yield ctx.report("COB006", f"{cob.role}: default COB-ID {problem}", cob.location(ctx))
 

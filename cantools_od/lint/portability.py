@@ -512,24 +512,41 @@ _INT_DEVICE_INFO = ("VendorNumber", "ProductNumber", "RevisionNumber", "NrOfRXPD
 _OCTAL = re.compile(r"[+-]?0[0-9]*[1-9][0-9]*\Z")  # all zeros is 0 for every reader
 _COMMENT_KEY = re.compile(r"(?:lines|line[0-9]+)\Z", re.IGNORECASE)
 _COMMENT_SPELLING = re.compile(r"(?:Lines|Line[0-9]+)\Z")
-_LINES: WeakKeyDictionary[Context, list[str]] = WeakKeyDictionary()
+_TEXT: WeakKeyDictionary[Context, str | bytes] = WeakKeyDictionary()
+# Where str.splitlines breaks lines (what these rules number lines by); in ASCII bytes, the first of them.
+_BREAK = re.compile("\r\n|[\n\r\v\f\x1c\x1d\x1e\x85\u2028\u2029]")
+_BREAK_BYTES = re.compile(b"\r\n|[\n\r\v\f\x1c\x1d\x1e]")
 
 
-def _text_lines(ctx: Context) -> list[str]:
-    """The file's lines as read, once a check (only the rules on a few keys' spelling need the text itself)."""
-    if ctx not in _LINES:
+def _lines_from(ctx: Context, first: int) -> Iterator[tuple[int, str]]:
+    """The file's lines from line `first` (counted from 1) on, with their numbers, found as they are asked for:
+    the rules on a few keys' spelling need only a few lines, and a list of all would cost a large file several
+    times its size. An ASCII file is read as its bytes, any other once decoded."""
+    if ctx not in _TEXT:
         original = ctx.device._original or b""
-        _LINES[ctx] = decode_as(original)[0].splitlines() if original else []
-    return _LINES[ctx]
+        _TEXT[ctx] = original if original.isascii() else decode_as(original)[0]
+    text = _TEXT[ctx]
+    breaks = _BREAK_BYTES.finditer(text) if isinstance(text, bytes) else _BREAK.finditer(text)
+    start, number = 0, 1
+    for found in breaks:
+        if number >= first:
+            yield number, _as_text(text[start : found.start()])
+        start, number = found.end(), number + 1
+    if start < len(text) and number >= first:
+        yield number, _as_text(text[start:])
+
+
+def _as_text(line: str | bytes) -> str:
+    return line.decode("ascii") if isinstance(line, bytes) else line
 
 
 def _written(ctx: Context, section: Section, key: str) -> str | None:
     """The value of `key` as the file writes it, None when the key is absent."""
     where = section.origin.where(key) if section.origin is not None else None
-    lines = _text_lines(ctx)
-    if where is None or not 0 < where[0] <= len(lines):
+    if where is None or where[0] <= 0:
         return None
-    return lines[where[0] - 1][where[2] - 1 :].strip()
+    number, line = next(_lines_from(ctx, where[0]), (0, ""))
+    return line[where[2] - 1 :].strip() if number == where[0] else None
 
 
 @rule(
@@ -599,12 +616,10 @@ def comments_key_case(ctx: Context) -> Iterator[Finding]:
     comments = ctx.device.comments
     if comments is None or comments.origin is None:
         return
-    lines = _text_lines(ctx)
-    for number in range(comments.origin.line, len(lines)):
-        line = lines[number]
+    for number, line in _lines_from(ctx, comments.origin.line + 1):
         if line.lstrip().startswith("["):
             return
         key = line.split("=", 1)[0].strip() if "=" in line else ""
         if _COMMENT_KEY.match(key) and not _COMMENT_SPELLING.match(key):
             message = f"[Comments] {key}: python-canopen looks it up as {key[:4].title()}{key[4:].lower()} and fails"
-            yield ctx.report("DIA021", message, Location(file=ctx.device.source, line=number + 1, column=1))
+            yield ctx.report("DIA021", message, Location(file=ctx.device.source, line=number, column=1))

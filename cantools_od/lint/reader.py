@@ -6,6 +6,7 @@ from collections.abc import Callable
 
 from ..eds.keys import OBJECT_KEYS, Kind
 from ..model import Device, Diagnostic, NodeIdExpr, Severity, Variable
+from ..model.assemble import construct
 from .rules import Context, Fix, declare
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -196,7 +197,7 @@ def reader_fix(ctx: Context, diagnostic: Diagnostic) -> Fix | None:
                 continue
             if value.offset < 0:
                 return None  # `$NODEID-n` has no portable spelling
-            canonical = NodeIdExpr(offset=value.offset)
+            canonical = construct(NodeIdExpr, {"offset": value.offset})
             # Unsafe: a peer that did not read the old spelling reads a value from the new one.
             return Fix(f"write {canonical.canonical()}", safe=False, apply=_setter(var, field, canonical))
     return None

@@ -14,6 +14,7 @@ from typing import Any
 from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
 from ..model.canopennode import StackConfig
 from ..model.cia301.pdo import frame_bits
+from ..model.source import location
 
 
 @dataclass(frozen=True)
@@ -69,7 +70,7 @@ class Context:
     def at(self, section: Section | None, key: str | None = None) -> Location:
         """The key's line, or the section header when the key is absent or not given."""
         if section is None or section.origin is None:
-            return Location(file=self.device.source, line=0, column=0)
+            return location(self.device.source, 0, 0)
         return section.origin.key(key) if key else section.origin.header()
 
     def value_at(self, section: Section | None, key: str) -> Location:

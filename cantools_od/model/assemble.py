@@ -13,7 +13,7 @@ from pydantic import BaseModel
 
 M = TypeVar("M", bound=BaseModel)
 
-_TEMPLATES: dict[tuple[type[BaseModel], int], tuple[dict[str, Any], dict[str, Any]]] = {}
+_TEMPLATES: dict[tuple[type[BaseModel], int], tuple[dict[str, Any], dict[str, Any], set[str]]] = {}
 
 
 def assemble(cls: type[M], values: dict[str, Any], defaults: dict[str, Any]) -> M:
@@ -23,34 +23,57 @@ def assemble(cls: type[M], values: dict[str, Any], defaults: dict[str, Any]) -> 
     counts as set (a reader gives each a value), and the instances of one class share that set:
     a set per instance would cost more memory than the instance's values in a large file.
     """
-    obj = cls.__new__(cls)
-    fields = _template(cls, defaults).copy()  # a copy of a key-sharing dict shares its keys too
+    found = _TEMPLATES.get((cls, id(defaults)))  # a reader calls this once per section: no further call
+    if found is None or found[0] is not defaults:
+        found = _template(cls, defaults)
+    fields = found[1].copy()  # a copy of a key-sharing dict shares its keys too
     fields.update(values)
-    object.__setattr__(obj, "__dict__", fields)
-    object.__setattr__(obj, "__pydantic_fields_set__", _all_fields(cls))
-    object.__setattr__(obj, "__pydantic_extra__", None)
-    object.__setattr__(obj, "__pydantic_private__", None)
+    obj = cls.__new__(cls)
+    _set(obj, "__dict__", fields)
+    _set(obj, "__pydantic_fields_set__", found[2])
+    _set(obj, "__pydantic_extra__", None)
+    _set(obj, "__pydantic_private__", None)
     return obj
 
 
-def _template(cls: type[BaseModel], defaults: dict[str, Any]) -> dict[str, Any]:
+_set = object.__setattr__
+
+
+def _template(cls: type[BaseModel], defaults: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any], set[str]]:
     """`defaults` as the attribute dict of an instance of `cls`, made by setting the attributes one by
     one: CPython then shares the key table among the class's instances (PEP 412), which makes each
-    copy about half the size of a plain dict of the same fields."""
-    key = (cls, id(defaults))
-    found = _TEMPLATES.get(key)
-    if found is None or found[0] is not defaults:
-        instance = cls.__new__(cls)
-        for name, value in defaults.items():
-            object.__setattr__(instance, name, value)
-        found = _TEMPLATES[key] = (defaults, instance.__dict__)  # keeps `defaults`, so its id stays its own
-    return found[1]
+    copy about half the size of a plain dict of the same fields. Kept with `defaults` (so that its id
+    stays its own) and the set of all field names."""
+    instance = cls.__new__(cls)
+    for name, value in defaults.items():
+        _set(instance, name, value)
+    found = _TEMPLATES[(cls, id(defaults))] = (defaults, instance.__dict__, _all_fields(cls))
+    return found
 
 
 @cache
 def _all_fields(cls: type[BaseModel]) -> set[str]:
     # Shared: pydantic adds a field's name on assignment, which changes nothing here.
     return set(cls.model_fields)
+
+
+def construct(cls: type[M], values: dict[str, Any]) -> M:
+    """An instance of `cls` from `values` already of the right type, its other fields at their defaults (made
+    fresh where a field has a default factory): `assemble` for classes with few instances, without validation
+    (which would build the class's schema on first use: a cost at every start of the command line)."""
+    defaults, factories = _class_defaults(cls)
+    for name, factory in factories:
+        if name not in values:
+            values[name] = factory()
+    return assemble(cls, values, defaults)
+
+
+@cache
+def _class_defaults(cls: type[BaseModel]) -> tuple[dict[str, Any], tuple[tuple[str, Any], ...]]:
+    factories = tuple((name, info.default_factory) for name, info in cls.model_fields.items() if info.default_factory)
+    made = {name for name, _ in factories}  # these take the place of their factory's value, in field order
+    defaults = {name: (None if name in made else value) for name, value in field_defaults(cls).items()}
+    return defaults, factories
 
 
 def field_defaults(cls: type[BaseModel]) -> dict[str, Any]:

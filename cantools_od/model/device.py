@@ -112,8 +112,9 @@ class Device(BaseModel):
 
     model_config = ConfigDict(defer_build=True)
 
-    file_info: FileInfo = FileInfo()
-    device_info: DeviceInfo = DeviceInfo()
+    # Made without validation, which would build both schemas (and load pydantic's plugins) at import.
+    file_info: FileInfo = FileInfo.model_construct()
+    device_info: DeviceInfo = DeviceInfo.model_construct()
     dummy_usage: DummyUsage | None = None
     comments: Comments | None = None
     mandatory_objects: ObjectList | None = None

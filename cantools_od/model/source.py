@@ -8,6 +8,8 @@ from typing import Protocol, TypeVar
 
 from pydantic import BaseModel, ConfigDict
 
+from .assemble import assemble
+
 
 class Severity(StrEnum):
     ERROR = "error"
@@ -26,6 +28,15 @@ class Location(BaseModel):
 
     def __str__(self) -> str:
         return f"{self.file or '<input>'}:{self.line}:{self.column}"
+
+
+def location(file: str, line: int, column: int) -> Location:
+    """A Location of values known to be of the right types, made without validation: validating would build
+    the class's schema on first use (and load pydantic's plugins), a cost at every start of a command."""
+    return assemble(Location, {"file": file, "line": line, "column": column}, _LOCATION)
+
+
+_LOCATION = {"file": "", "line": 0, "column": 0}
 
 
 class Origin(BaseModel):
@@ -50,7 +61,7 @@ class Origin(BaseModel):
     under "" the section's own name when written otherwise (`DeviceCommissioning`)."""
 
     def header(self) -> Location:
-        return Location(file=self.file, line=self.line, column=self.column)
+        return location(self.file, self.line, self.column)
 
     def where(self, name: str) -> tuple[int, int, int] | None:
         """The key's (line, key column, value column), None when the section has no such key."""
@@ -74,13 +85,13 @@ class Origin(BaseModel):
         where = self.where(name)
         if where is None:
             return self.header()
-        return Location(file=self.file, line=where[0], column=where[1])
+        return location(self.file, where[0], where[1])
 
     def value(self, name: str) -> Location:
         where = self.where(name)
         if where is None:
             return self.header()
-        return Location(file=self.file, line=where[0], column=where[2])
+        return location(self.file, where[0], where[2])
 
 
 class Diagnostic(BaseModel):
@@ -91,10 +102,21 @@ class Diagnostic(BaseModel):
     code: str
     severity: Severity
     message: str
-    location: Location = Location()
+    # Made without validation: validating would build Location's schema, and load pydantic's plugins, at import.
+    location: Location = Location.model_construct()
 
     def format(self) -> str:
         return f"{self.location}: {self.severity.value}: {self.message} [{self.code}]"
+
+
+def diagnostic(code: str, severity: Severity, message: str, where: Location) -> Diagnostic:
+    """A Diagnostic of values known to be of the right types, made without validation (see `location`)."""
+    return assemble(
+        Diagnostic, {"code": code, "severity": severity, "message": message, "location": where}, _DIAGNOSTIC
+    )
+
+
+_DIAGNOSTIC = {"code": "", "severity": Severity.ERROR, "message": "", "location": None}
 
 
 class Reported(Protocol):

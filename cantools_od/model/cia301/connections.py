@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from ..assemble import construct
 from ..device import Device
 from ..values import NodeIdExpr
 from .cobid import EMCY_BASE, HEARTBEAT_BASE, RTR, SDO_RX_BASE, SDO_TX_BASE, VALID, Cob, cob_of
@@ -66,6 +67,6 @@ def producers(device: Device, pdo_list: list[Pdo] | None = None) -> list[Cob]:
         cob = cob_of(slot(device, index, 0), role)
         if cob is not None and isinstance(cob.value, int) and cob.value & RTR:  # bit 30: produces
             found.append(Cob(cob.slot, cob.value & ~(VALID | RTR), role))
-    heartbeat = NodeIdExpr(offset=HEARTBEAT_BASE, text=f"$NODEID+0x{HEARTBEAT_BASE:X}")
+    heartbeat = construct(NodeIdExpr, {"offset": HEARTBEAT_BASE, "text": f"$NODEID+0x{HEARTBEAT_BASE:X}"})
     found.append(Cob(None, heartbeat, "NMT error control (heartbeat)"))
     return found

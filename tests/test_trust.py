@@ -292,6 +292,24 @@ def test_convert_to_one_node_names_node_id(tmp_path: Path, source: str, target: 
     assert not (tmp_path / target).exists()
 
 
+def test_convert_refuses_a_node_id_the_file_is_not_commissioned_for(tmp_path: Path) -> None:
+    # Before, `--node-id 7` was ignored without a word and the DCF said NodeID=16.
+    commissioned = replaced(DRIVE, b"[DeviceInfo]", b"[DeviceComissioning]\nNodeID=16\nBaudrate=500\n\n[DeviceInfo]")
+    source = written(tmp_path, "drive.eds", commissioned)
+    for target in ("out.dcf", "out.xdc"):
+        result = run("convert", "drive.eds", "-o", target, "--node-id", "7", cwd=tmp_path)
+        assert result.returncode == 2, result.stderr
+        assert result.stderr.strip().splitlines() == [
+            "drive.eds: error: the file is commissioned for node-ID 16, not 7:"
+            " leave out --node-id or change the node-ID in the file"
+        ]
+        assert not (tmp_path / target).exists()
+    agreed = run("convert", "drive.eds", "-o", "out.dcf", "--node-id", "16", cwd=tmp_path)
+    assert agreed.returncode == 0, agreed.stderr
+    assert b"NodeID=16" in (tmp_path / "out.dcf").read_bytes()
+    assert source.read_bytes() == commissioned
+
+
 # 7. help and README: what the table cannot check (tests/test_help_readme.py checks the rest) -----
 
 

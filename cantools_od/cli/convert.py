@@ -45,6 +45,7 @@ def command(source: str, output: str, node_id: int | None) -> None:
     if problems:
         click.echo(f"{source}: error: not converted: {problems}", err=True)
         sys.exit(EXIT_FINDINGS)
+    _refuse_other_node_id(source, device.commissioning.node_id if device.commissioning else None, node_id)
     fmt_in, fmt_out = format_for(Path(source)), format_for(Path(output))
     if fmt_out in ("dcf", "xdc") and not device.is_dcf and device.node_id is None:
         made = "a DCF" if fmt_out == "dcf" else "an XDC"
@@ -66,3 +67,16 @@ def command(source: str, output: str, node_id: int | None) -> None:
             click.echo(f"{source}: warning: {lost}", err=True)
     write_outputs({Path(output): data})
     sys.exit(EXIT_OK)
+
+
+def _refuse_other_node_id(source: str, commissioned: int | None, given: int | None) -> None:
+    """A file commissioned for one node is not silently written for another: its values may already be
+    resolved for the node-ID it names, so --node-id must agree with it (or be left out)."""
+    if given is None or commissioned is None or given == commissioned:
+        return
+    click.echo(
+        f"{source}: error: the file is commissioned for node-ID {commissioned}, not {given}:"
+        " leave out --node-id or change the node-ID in the file",
+        err=True,
+    )
+    sys.exit(EXIT_USAGE)

@@ -21,7 +21,8 @@ _SECTIONS: tuple[tuple[str, str, str], ...] = (
 def losses(device: Device, written: Device, fmt: str) -> list[str]:
     """One line per section of `device` that `written` (its output in `fmt`, read back) lacks or holds
     otherwise: `[Comments] is not kept in XDD (EDS and DCF keep it)`."""
-    before, after = device.content(), written.content()
+    fields = [key for key, _, _ in _SECTIONS]
+    before, after = device.content(fields), written.content(fields)
     found = []
     for key, label, keeper in _SECTIONS:
         old, new = before.get(key), after.get(key)

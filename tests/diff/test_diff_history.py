@@ -35,7 +35,8 @@ def pair_params() -> list[object]:
     found = pairs()
     if not found:
         return [pytest.param(None, marks=pytest.mark.skip(reason="../shared/eds-history is absent"))]
-    return [pytest.param(path, id=path.name) for path in found]
+    # A pair's tests run on one worker (one xdist group a pair), so that each side is read once (`device` caches).
+    return [pytest.param(path, id=path.name, marks=pytest.mark.xdist_group(f"history-{path.name}")) for path in found]
 
 
 def side(pair: Path, stem: str) -> Path | None:
@@ -112,7 +113,7 @@ FMT_LOSSES: dict[str, str] = {}  # pair -> what fmt of its new file loses (none 
 
 def fmt_params() -> list[object]:
     return [
-        pytest.param(*p.values, marks=pytest.mark.xfail(reason=FMT_LOSSES[p.id], strict=True), id=p.id)
+        pytest.param(*p.values, marks=[*p.marks, pytest.mark.xfail(reason=FMT_LOSSES[p.id], strict=True)], id=p.id)
         if p.id in FMT_LOSSES  # type: ignore[attr-defined]
         else p
         for p in pair_params()

@@ -23,6 +23,10 @@ from support import CORPUS, ROOT, corpus_devices
 
 XDD = CORPUS.parent / "xdd"
 
+# Both tests read one module fixture (every corpus file fixed and judged): under pytest-xdist they run on one
+# worker, which makes it once.
+pytestmark = pytest.mark.xdist_group("fix_peers")
+
 
 def _job(job: tuple[Path, Path]) -> tuple[list[Change], set[tuple[str, bool]]]:
     return judge_fixes(*job)

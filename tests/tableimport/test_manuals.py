@@ -17,6 +17,9 @@ from cantools_od.model import AccessType, NodeIdExpr, ObjectKind
 from cantools_od.tableimport import ImportResult, import_tables
 from cantools_od.tableimport.merge import Conflict
 
+# Its tests share the imports `imported` caches: under pytest-xdist they run on one worker, which makes each once.
+pytestmark = pytest.mark.xdist_group("manuals")
+
 
 def seed(prefix: str) -> Path:
     path = SEEDS / MANUALS[prefix]

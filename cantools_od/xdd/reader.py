@@ -14,7 +14,7 @@ from ..eds.keys import MAX_DIGITS, is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
 from . import REFUSED_CODES as REFUSED_CODES
-from . import file_comments  # where writers and tests have always found them
+from . import compact_marks, file_comments  # where writers and tests have always found them
 from . import refused as refused
 from .context import ReadContext
 from .fragments import fragment, one_line
@@ -156,6 +156,8 @@ class _Document:
         if marked:
             line = ctx.positions.at(marked[0][0])[0]
             self.device.comments = file_comments.read_comment_block(marked[0][1], line, ctx.report)
+        for _, text in [(o, t) for o, t in root.prologue if compact_marks.marked(t)][:1]:
+            compact_marks.restore_compact(self.device, text)
         if self.device.commissioning is not None:
             self.device.node_id = self.device.commissioning.node_id
 

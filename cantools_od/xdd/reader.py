@@ -156,8 +156,9 @@ class _Document:
         if marked:
             line = ctx.positions.at(marked[0][0])[0]
             self.device.comments = file_comments.read_comment_block(marked[0][1], line, ctx.report)
-        for _, text in [(o, t) for o, t in root.prologue if compact_marks.marked(t)][:1]:
-            compact_marks.restore_compact(self.device, text)
+        compact = [text for _, text in root.prologue if compact_marks.marked(text)]
+        if compact:  # the compact forms of the EDS this was written from (see compact_marks)
+            compact_marks.restore_compact(self.device, compact[0])
         if self.device.commissioning is not None:
             self.device.node_id = self.device.commissioning.node_id
 

@@ -177,3 +177,17 @@ def test_corpus_compact_files_read_alike_after_xml(path: Path, tmp_path: Path) -
     except configparser.NoOptionError as error:  # an object python-canopen cannot read at all: said, or a finding
         unsaid = [] if error.section[:4] in said else [str(error)]
     assert unsaid == []
+
+
+def test_convert_names_the_arrays_an_xdd_cannot_keep_compact(tmp_path: Path) -> None:
+    """A compact array whose elements state no AccessType: an XDD gives each parameter an access (CiA 311's
+    default), so the elements no longer follow the array and the EDS written from the XDD lists them.
+    `convert` says so for exactly that object, and not for the array that stays compact."""
+    text = HEADER.replace("AccessType=rw\nDefaultValue=7", "DefaultValue=7")
+    source = tmp_path / "compact.eds"
+    source.write_text(text, encoding="ascii")
+    result = convert(source, tmp_path / "compact.xdd")
+    assert result.returncode == 0, result.stderr
+    said = [line for line in result.stderr.splitlines() if "Compact" in line]
+    assert len(said) == 1 and "CompactSubObj form of 2000 is not kept in XDD" in said[0], result.stderr
+    assert source.read_text(encoding="ascii") == text

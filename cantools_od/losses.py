@@ -39,4 +39,28 @@ def losses(device: Device, written: Device, fmt: str) -> list[str]:
     if dropped:
         names = ", ".join(f"[{name}]" for name in dropped[:5]) + (" ..." if len(dropped) > 5 else "")
         found.append(f"{names} {'is' if len(dropped) == 1 else 'are'} not kept in {fmt.upper()}")
+    return found + _compact_losses(device, written, fmt.upper())
+
+
+def _compact_losses(device: Device, written: Device, fmt: str) -> list[str]:
+    """The objects whose compact form (CompactSubObj, CompactPDO) `written` no longer implies: a peer reads
+    them otherwise from an EDS written from it, since that EDS lists them in full."""
+    arrays = []
+    for index, obj in device.objects.items():
+        kept = written.objects.get(index)
+        implied = [n for n, sub in obj.subs.items() if sub.implicit and obj.compact_sub_obj]
+        if implied and (kept is None or any(n not in kept.subs or not kept.subs[n].implicit for n in implied)):
+            arrays.append(f"{index:04X}")
+    pdos = [
+        f"{i:04X}"
+        for i, o in device.objects.items()
+        if o.implicit and not getattr(written.objects.get(i), "implicit", False)
+    ]
+    found = []
+    if arrays:
+        found.append(
+            f"the CompactSubObj form of {', '.join(arrays)} is not kept in {fmt} (its sub-objects are listed in full)"
+        )
+    if pdos:
+        found.append(f"the PDO objects CompactPDO implies ({', '.join(pdos)}) are not kept implied in {fmt}")
     return found

@@ -18,6 +18,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 from ..eds.format import format_value
 from ..model import AccessType, CanopenNodeInfo, Commissioning, Device, Dialect, Object, ObjectKind, Variable
+from .compact_marks import compact_block
 from .file_comments import comment_block
 from .fragments import restore
 from .reader import FEATURE_DEFAULTS, RAW_PREFIX
@@ -110,6 +111,9 @@ def canonical_xml(device: Device, xdc: bool = False) -> str:
     out.lines.append('<?xml version="1.0" encoding="utf-8"?>')
     if device.comments is not None:  # CiA 311 has no element for them: an XML comment (see file_comments)
         out.lines.append(comment_block(device.comments))
+    compact = compact_block(device)
+    if compact is not None:  # nor for an EDS's CompactSubObj form: an XML comment too (see compact_marks)
+        out.lines.append(compact)
     out.add(0, f'<ISO15745ProfileContainer xmlns:xsi="{XSI}" xmlns="{NS_1_1}">')
     _device_profile(out, device)
     _network_profile(out, device, xdc)

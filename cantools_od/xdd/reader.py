@@ -14,7 +14,7 @@ from ..eds.keys import MAX_DIGITS, is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
 from . import REFUSED_CODES as REFUSED_CODES
-from . import file_comments  # where writers and tests have always found them
+from . import compact_marks, file_comments  # where writers and tests have always found them
 from . import refused as refused
 from .context import ReadContext
 from .fragments import fragment, one_line
@@ -156,6 +156,9 @@ class _Document:
         if marked:
             line = ctx.positions.at(marked[0][0])[0]
             self.device.comments = file_comments.read_comment_block(marked[0][1], line, ctx.report)
+        compact = [text for _, text in root.prologue if compact_marks.marked(text)]
+        if compact:  # the compact forms of the EDS this was written from (see compact_marks)
+            compact_marks.restore_compact(self.device, compact[0])
         if self.device.commissioning is not None:
             self.device.node_id = self.device.commissioning.node_id
 

@@ -20,6 +20,7 @@ from typing import Any
 
 from ..eds.compact import compact_form_holds, implied_pdo_objects
 from ..model import Device, Object
+from . import file_comments
 
 MARKER = "cantools-od: EDS CompactSubObj/CompactPDO"
 _FIRST_LINE = MARKER + " (index=count, index=CompactPDO, CompactPDO=mask): what an EDS writes compactly"
@@ -37,8 +38,7 @@ def compact_block(device: Device) -> str | None:
 
 
 def marked(text: str) -> bool:
-    first, newline, _ = text.partition("\n")
-    return bool(newline) and first.startswith(MARKER)
+    return file_comments.marked(text, MARKER)
 
 
 def restore_compact(device: Device, text: str) -> None:

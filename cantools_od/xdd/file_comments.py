@@ -33,10 +33,11 @@ def comment_block(comments: Comments) -> str:
     return f"<!--{_FIRST_LINE}\n{_escape(render([comments_section(comments)], []))}-->"
 
 
-def marked(text: str) -> bool:
-    """Whether an XML comment's text is the one holding `[Comments]`."""
+def marked(text: str, marker: str = MARKER) -> bool:
+    """Whether an XML comment's text is one of ours: its first line starts with `marker` (by default
+    the one of the comment holding `[Comments]`) and more lines follow."""
     first, newline, _ = text.partition("\n")
-    return bool(newline) and first.startswith(MARKER)
+    return bool(newline) and first.startswith(marker)
 
 
 def read_comment_block(text: str, line: int, report: Report) -> Comments | None:

@@ -191,7 +191,9 @@ def _model_fields(device: Any) -> dict[tuple[tuple[int, int], str], Any]:
 
 def outputs(source: Path) -> tuple[dict[str, bytes], set[tuple[tuple[int, int], str]]]:
     """What `fmt`, `convert SOURCE -o X.dcf --node-id 5` (EDS only) and `lint --fix` write for `source` (the
-    API calls those commands make, on one reading of the file), and the entries the fixes changed."""
+    API calls those commands make, on one reading of the file), and the entries the fixes changed. An EDS
+    commissioned for another node-ID is written for node 5 all the same: `convert` refuses `--node-id 5` for it,
+    and writes this DCF once the file's own NodeID is changed to 5."""
     from cantools_od.api import dumps, format_for, load
     from cantools_od.lint import LintOptions, lint
 

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
+import canopen
 import pytest
 
 from support import ROOT, file_params
@@ -90,3 +92,43 @@ MANDATORY = """\
             <CANopenSubObject subIndex="01" name="Vendor-ID" objectType="7"
               dataType="0007" accessType="ro" defaultValue="0x00000123" PDOmapping="no" />
           </CANopenObject>"""
+
+
+PeerEntry = tuple[object, ...]
+"""What python-canopen reads of one entry: name, data type, access, default, value, min, max, PDO-mappable."""
+
+
+def peer_entries(path: Path, folder: Path | None = None) -> dict[tuple[int, int], PeerEntry]:
+    """Every entry python-canopen reads, sub-objects it makes up on demand included (1-254 of an array).
+    A `[DummyUsage]` python-canopen cannot read (it asks for Dummy0001-0007) is left out of both sides."""
+    text = re.sub(r"(?ims)^\[DummyUsage\][^\[]*", "", path.read_text(encoding="latin-1"))
+    copy = (folder or path.parent) / ("peer-" + path.name)
+    copy.write_text(text, encoding="latin-1")
+    found: dict[tuple[int, int], PeerEntry] = {}
+    for obj in canopen.import_od(str(copy)).values():
+        members = [obj] if isinstance(obj, canopen.objectdictionary.ODVariable) else list(obj.values())
+        if isinstance(obj, canopen.objectdictionary.ODArray) and 1 in obj.subindices:
+            members += [obj[n] for n in range(2, 255) if n not in obj.subindices]
+        for var in members:
+            found[(var.index, var.subindex)] = (
+                var.name, var.data_type, var.access_type, var.default, var.value, var.min, var.max, var.pdo_mappable
+            )  # fmt: skip
+    return found
+
+
+def _misread_before(old: PeerEntry | None, new: PeerEntry | None) -> bool:
+    """Whether `new` differs from `old` only where python-canopen misread the original: a value it could not
+    read (a REAL ParameterValue written as an IEEE bit pattern) or a string it read with the quotes that delimit
+    it in lely's dialect, each read right from the output."""
+    if old is None or new is None:
+        return False
+    return all(a == b or a is None or (isinstance(a, str) and a == f'"{b}"') for a, b in zip(old, new, strict=True))
+
+
+def peer_differences(before: Path, after: Path, misread_before: bool = False) -> list[str]:
+    """Entries python-canopen reads differently from `after` than from `before`; with `misread_before`, an entry
+    it misread in `before` and reads right from `after` is no difference."""
+    old, new = peer_entries(before), peer_entries(after)
+    pairs = [(key, old.get(key), new.get(key)) for key in sorted(old.keys() | new.keys())]
+    excused = _misread_before if misread_before else lambda a, b: False
+    return [f"{i:04X}sub{s}: {a} -> {b}" for (i, s), a, b in pairs if a != b and not excused(a, b)]

@@ -54,7 +54,7 @@ class IntStyle:
 CANONICAL = IntStyle()
 
 _HEX_TEXT = re.compile(r"[ \t]*-?[ \t]*0[xX]([0-9a-fA-F]+)")
-_DEC_TEXT = re.compile(r"[ \t]*-?[ \t]*(?:[1-9][0-9]*|0)[ \t]*\Z")
+DECIMAL_INTEGER = re.compile(r"[ \t]*-?[ \t]*(?:[1-9][0-9]*|0)[ \t]*\Z")
 _NODEID_TERM = re.compile(r"\$nodeid", re.IGNORECASE)
 
 
@@ -66,7 +66,7 @@ def _written_radix(hint: str | None) -> tuple[Radix, int]:
     match = _HEX_TEXT.match(number)
     if match is not None:
         return Radix.HEX, len(match.group(1))
-    if _DEC_TEXT.match(number):
+    if DECIMAL_INTEGER.match(number):
         return Radix.DECIMAL, 0
     return Radix.CANONICAL, 0  # octal, C suffixes, sums: not a spelling worth keeping
 
@@ -154,7 +154,7 @@ def _real(value: float, dtype: DataType | None, dialect: Dialect, hint: str | No
     bits = dtype.bits if dtype is not None and dtype.bits in (32, 64) else 64
     if dialect is Dialect.LELY:
         return format_real(value, bits, as_bits=True)
-    if hint is not None and _DEC_TEXT.match(hint) and _as_real(int(hint), bits) == value:
+    if hint is not None and DECIMAL_INTEGER.match(hint) and _as_real(int(hint), bits) == value:
         return str(int(hint))  # e.g. 2147483647 for REAL32: python-canopen reads REAL limits with int()
     pattern = _bit_pattern(hint, value, bits)
     if pattern is not None:  # HighLimit=0xFFFF: lely reads the pattern, python-canopen its integer, as before
@@ -186,7 +186,7 @@ def _as_real(number: int, bits: int) -> float | None:
 def _time(value: TimeValue, hint: str | None) -> str:
     """TIME_OF_DAY / TIME_DIFFERENCE: `days ms`, unless the author wrote the bit pattern as one integer and it
     still reads as this value; python-canopen reads `days ms` as the two numbers' digits run together."""
-    if hint is not None and (_DEC_TEXT.match(hint) or _HEX_TEXT.fullmatch(hint.strip())):
+    if hint is not None and (DECIMAL_INTEGER.match(hint) or _HEX_TEXT.fullmatch(hint.strip())):
         try:
             if TimeValue.from_bits(int(hint, 0)) == value:
                 return hint.strip()

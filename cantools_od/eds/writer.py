@@ -10,31 +10,11 @@ from ..model.cia301.pdo import partner
 from ..model.device import Comments, Commissioning, DeviceInfo, FileInfo
 from . import ini
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
-from .decode import decode_as
 from .dialect import detect_dialect
 from .format import CANONICAL, IntStyle, format_key, format_value
+from .hints import NO_HINTS, Hints
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec, Kind
 from .storage import storage_comments
-
-
-class Hints:
-    """The text each key had in the file the device was read from, found by the key's recorded position.
-
-    Only a hint: the writer keeps a spelling choice from it (radix, an integral REAL) when the model's
-    value is still what that text reads as.
-    """
-
-    def __init__(self, original: bytes | None) -> None:
-        self._lines = ini.split_lines(decode_as(original)[0]) if original else []
-
-    def text(self, section: Section, key: str) -> str | None:
-        where = section.origin.where(key) if section.origin is not None and self._lines else None
-        if where is None or not 0 < where[0] <= len(self._lines) or where[2] < 1:
-            return None
-        return self._lines[where[0] - 1][where[2] - 1 :].strip()
-
-
-_NO_HINTS = Hints(None)
 
 
 @dataclass(frozen=True)
@@ -42,7 +22,7 @@ class _Style:
     dcf: bool
     as_written: bool
     ints: IntStyle = CANONICAL
-    hints: Hints = _NO_HINTS
+    hints: Hints = NO_HINTS
 
 
 @dataclass
@@ -59,9 +39,7 @@ def sections(
     `as_written` keeps `$NODEID` formulas spelled as read (the preserving writer compares spellings);
     `ints` chooses the radix of integers. Canonical output (not `as_written`) keeps keys the source
     had with an empty value: peers read `DefaultValue=` as an empty string or no value, not as absent."""
-    # Spelling hints come from INI text only: an XDD's recorded positions point into XML.
-    from_ini = device.file_format == "eds"
-    hints = Hints(device._original) if from_ini and not as_written else _NO_HINTS
+    hints = Hints.of(device) if not as_written else NO_HINTS
     style = _Style(dcf, as_written, ints, hints)
     # [FileInfo] and [DeviceInfo] are mandatory, but are not made up when the model has nothing for them.
     out = [

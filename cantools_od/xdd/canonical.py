@@ -16,7 +16,8 @@ from collections import defaultdict
 from collections.abc import Sequence
 from xml.sax.saxutils import escape, quoteattr
 
-from ..eds.format import format_value
+from ..eds.format import DECIMAL_INTEGER, format_value
+from ..eds.hints import Hints
 from ..model import AccessType, CanopenNodeInfo, Commissioning, Device, Dialect, Object, ObjectKind, Variable
 from .compact_marks import compact_block
 from .file_comments import comment_block
@@ -92,6 +93,7 @@ def _attrs(pairs: Sequence[tuple[str, object]]) -> str:
 class _Out:
     def __init__(self, device: Device) -> None:
         self.lines: list[str] = []
+        self.hints = Hints.of(device)
         self.raw: dict[str, list[str]] = defaultdict(list)
         for section in device.other_sections:
             if section.name.startswith(RAW_PREFIX) and "xml" in section.entries:
@@ -209,9 +211,13 @@ def _data_type(out: _Out, device: Device, obj: Object) -> None:
         out.add(5, "</q1:struct>")
 
 
-def _value(device: Device, var: Variable, owner: Object, value: object) -> str:
+def _value(out: _Out, device: Device, var: Variable, owner: Object, value: object, key: str) -> str:
+    """A value as CiA 311 writes it: decimal REALs, but a REAL the source wrote as an integer stays one
+    (python-canopen reads REAL limits with `int()`; an EDS written from this XDD keeps the integer)."""
     dtype = device.entry_type(var, owner)
-    return format_value(value, dtype, Dialect.CIA306)  # type: ignore[arg-type]
+    hint = out.hints.text(var, key) if isinstance(value, float) else None
+    kept = hint if hint is not None and DECIMAL_INTEGER.match(hint) else None
+    return format_value(value, dtype, Dialect.CIA306, hint=kept)  # type: ignore[arg-type]
 
 
 def _parameter(out: _Out, device: Device, var: Variable, owner: Object, unique: str) -> None:
@@ -235,9 +241,14 @@ def _parameter(out: _Out, device: Device, var: Variable, owner: Object, unique: 
         out.add(6, f"<q1:dataTypeIDRef uniqueIDRef={_attr(var.extra['dataTypeIDRef'])} />")
     if var.denotation is not None:
         out.add(6, f'<q1:denotation><label lang="en">{_text(var.denotation)}</label></q1:denotation>')
-    for element, value in (("actualValue", var.parameter_value), ("defaultValue", var.default)):
+    for element, value, key in (
+        ("actualValue", var.parameter_value, "ParameterValue"),
+        ("defaultValue", var.default, "DefaultValue"),
+    ):
         if value is not None:
-            out.add(6, f"<q1:{element} value={_attr(_value(device, var, owner, value))} />")
+            out.add(6, f"<q1:{element} value={_attr(_value(out, device, var, owner, value, key))} />")
+        elif _kept_empty(var, key):
+            out.add(6, f'<q1:{element} value="" />')
     _limits(out, device, var, owner)
     for key, text in var.extra.items():
         if key.startswith("parameter.") and text.startswith("<"):
@@ -246,14 +257,20 @@ def _parameter(out: _Out, device: Device, var: Variable, owner: Object, unique: 
     out.add(5, "</q1:parameter>")
 
 
+def _kept_empty(var: Variable, key: str) -> bool:
+    """Whether the source gave `key` with an empty value: kept as an empty attribute, as the EDS writer keeps
+    `DefaultValue=` (peers read it as an empty string, not as absent)."""
+    return var.origin is not None and var.origin.where(key) is not None and key not in var.extra
+
+
 def _limits(out: _Out, device: Device, var: Variable, owner: Object) -> None:
     if var.low_limit is None and var.high_limit is None:
         return
     out.add(6, "<q1:allowedValues>")
     out.add(7, "<q1:range>")
-    for element, value in (("minValue", var.low_limit), ("maxValue", var.high_limit)):
+    for element, value, key in (("minValue", var.low_limit, "LowLimit"), ("maxValue", var.high_limit, "HighLimit")):
         if value is not None:
-            out.add(8, f"<{element} value={_attr(_value(device, var, owner, value))} />")
+            out.add(8, f"<{element} value={_attr(_value(out, device, var, owner, value, key))} />")
     out.add(7, "</q1:range>")
     out.add(6, "</q1:allowedValues>")
 

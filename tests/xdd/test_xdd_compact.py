@@ -7,21 +7,18 @@ XDD lists read otherwise when the EDS written from it lists them too."""
 
 from __future__ import annotations
 
-import configparser
 import os
 import re
 import subprocess
 from pathlib import Path
 
-import canopen
 import pytest
 from lintkit import BASE
+from xddkit import peer_differences, peer_entries
 
-from cantools_od import dumps, load, loads
-from cantools_od.api import Format
-from cantools_od.losses import losses
+from cantools_od import dumps, load
 
-from support import cli_command, corpus_files, file_params
+from support import cli_command
 
 
 def _section(name: str) -> str:
@@ -81,30 +78,6 @@ NrOfEntries=2
 )
 
 
-def entries(path: Path, folder: Path | None = None) -> dict[tuple[int, int], tuple[object, ...]]:
-    """Every entry python-canopen reads, sub-objects it makes up on demand included (1-254 of an array).
-    A `[DummyUsage]` python-canopen cannot read (it asks for Dummy0001-0007) is left out of both sides."""
-    text = re.sub(r"(?ims)^\[DummyUsage\][^\[]*", "", path.read_text(encoding="latin-1"))
-    copy = (folder or path.parent) / ("peer-" + path.name)
-    copy.write_text(text, encoding="latin-1")
-    found: dict[tuple[int, int], tuple[object, ...]] = {}
-    for obj in canopen.import_od(str(copy)).values():
-        members = [obj] if isinstance(obj, canopen.objectdictionary.ODVariable) else list(obj.values())
-        if isinstance(obj, canopen.objectdictionary.ODArray) and 1 in obj.subindices:
-            members += [obj[n] for n in range(2, 255) if n not in obj.subindices]
-        for var in members:
-            found[(var.index, var.subindex)] = (
-                var.name, var.data_type, var.access_type, var.default, var.value, var.min, var.max, var.pdo_mappable
-            )  # fmt: skip
-    return found
-
-
-def differences(before: Path, after: Path) -> list[str]:
-    old, new = entries(before), entries(after)
-    return [f"{i:04X}sub{s}: {old.get((i, s))} -> {new.get((i, s))}" for i, s in sorted(old.keys() | new.keys())
-            if old.get((i, s)) != new.get((i, s))]  # fmt: skip
-
-
 def convert(source: Path, target: Path) -> subprocess.CompletedProcess[str]:
     return subprocess.run([*cli_command(), "convert", str(source), "-o", str(target)], capture_output=True, text=True)
 
@@ -125,7 +98,7 @@ def test_compact_arrays_and_pdos_come_back_through_xml(tmp_path: Path, xml: str)
     for index, count in (("1003", 254), ("2000", 8), ("2001", 3)):
         assert f"[{index}]" in back and f"CompactSubObj={count}" in back.split(f"[{index}]")[1].split("\n\n")[0]
     assert "[2000sub" not in back and "[1400]" not in back and "CompactPDO=0x03" in back
-    assert differences(source, tmp_path / f"back.{ini}") == []
+    assert peer_differences(source, tmp_path / f"back.{ini}") == []
 
 
 def test_an_edited_array_is_written_as_the_xdd_says(tmp_path: Path) -> None:
@@ -146,37 +119,8 @@ def test_an_edited_array_is_written_as_the_xdd_says(tmp_path: Path) -> None:
     assert "CompactSubObj" not in gains and "SubNumber=8" in gains and "[2000sub7]" in back
     assert "[2000sub8]" not in back
     assert "CompactSubObj=3" in back and "[2001sub3]" in back and "[2001sub2]" not in back
-    peer = entries(tmp_path / "back.eds")
+    peer = peer_entries(tmp_path / "back.eds")
     assert peer[(0x2000, 0)][:4] == ("NrOfObjects", 5, "ro", 8) and peer[(0x2001, 3)][3] == 5
-
-
-COMPACT_FILES = [p for p in corpus_files() if b"compactsubobj" in p.read_bytes().lower()]
-
-
-@pytest.mark.parametrize("path", file_params(COMPACT_FILES, "../shared/eds-corpus is absent"))
-def test_corpus_compact_files_read_alike_after_xml(path: Path, tmp_path: Path) -> None:
-    """Every corpus EDS/DCF with CompactSubObj, through XDD (a DCF through XDC) and back: python-canopen
-    reads the same entries as from the file in canonical form, but for objects `convert` names as not kept
-    compact (the file as-is may spell keys it reads
-    otherwise, e.g. `[DeviceCommissioning]`, which the canonical form and the round trip alike correct)."""
-    ini: Format = "dcf" if path.suffix.lower() == ".dcf" else "eds"
-    xml: Format = "xdc" if ini == "dcf" else "xdd"
-    device = load(path)
-    reference = tmp_path / f"reference.{ini}"
-    reference.write_bytes(dumps(device, ini, "canonical"))
-    back = tmp_path / f"back.{ini}"
-    written = loads(dumps(device, xml), fmt=xml)
-    back.write_bytes(dumps(written, ini))
-    said = " ".join(line for line in losses(device, written, xml) if "Compact" in line)
-    try:
-        entries(path, tmp_path)
-    except Exception as error:  # the judge cannot read the file itself: nothing to compare with
-        pytest.skip(f"python-canopen cannot read {path.name}: {error}")
-    try:
-        unsaid = [line for line in differences(reference, back) if line[:4] not in said]
-    except configparser.NoOptionError as error:  # an object python-canopen cannot read at all: said, or a finding
-        unsaid = [] if error.section[:4] in said else [str(error)]
-    assert unsaid == []
 
 
 def test_convert_names_the_arrays_an_xdd_cannot_keep_compact(tmp_path: Path) -> None:

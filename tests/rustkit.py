@@ -33,6 +33,7 @@ __all__ = [
     "Record",
     "cargo",
     "eds_text",
+    "has_tool",
     "render_rust",
     "require",
     "run",
@@ -66,17 +67,24 @@ def _works(*command: str) -> bool:
     return result.returncode == 0
 
 
+_PROBES = {
+    "cargo": ("cargo", "--version"),
+    "rustc": ("rustc", "--version"),
+    "rustfmt": ("rustfmt", "--version"),
+    "clippy": ("cargo", "clippy", "--version"),
+    "clippy-driver": ("clippy-driver", "--version"),
+}
+
+
+def has_tool(component: str) -> bool:
+    """Whether `component` (one of `cargo`, `rustc`, `rustfmt`, `clippy`, `clippy-driver`) is installed and runs."""
+    return _works(*_PROBES[component])
+
+
 def require(*components: str) -> None:
     """Skip the test unless every one of `cargo`, `rustc`, `rustfmt`, `clippy` is installed."""
-    commands = {
-        "cargo": ("cargo", "--version"),
-        "rustc": ("rustc", "--version"),
-        "rustfmt": ("rustfmt", "--version"),
-        "clippy": ("cargo", "clippy", "--version"),
-        "clippy-driver": ("clippy-driver", "--version"),
-    }
     for component in components:
-        if not _works(*commands[component]):
+        if not has_tool(component):
             pytest.skip(
                 f"{component} is not installed (rustup component add {component.split('-')[0]} needs the network)"
             )

@@ -6,7 +6,8 @@ one file per worker):
 
     cd tests && PYTHONPATH=../bench TESTCPU_OUT=/tmp/cpu ../.venv/bin/python -m pytest -p testcpu ../tests/diff
 
-then the sum per module, largest first:
+then the sum per module, largest first, and per xdist group (a group runs on one worker: no group may be
+longer than the wall time wanted):
 
     .venv/bin/python bench/testcpu.py /tmp/cpu
 
@@ -50,8 +51,10 @@ def pytest_configure(config: pytest.Config) -> None:
 def pytest_runtest_protocol(item: pytest.Item, nextitem: pytest.Item | None) -> Generator[None, None, None]:
     children, own, started, wall = _children(), time.process_time(), _started[0], time.perf_counter()
     yield
+    mark = item.get_closest_marker("xdist_group")
     record = {
         "id": item.nodeid,
+        "group": (mark.args[0] if mark.args else mark.kwargs.get("name")) if mark else None,
         "own": time.process_time() - own,
         "children": _children() - children,
         "processes": _started[0] - started,
@@ -63,9 +66,11 @@ def pytest_runtest_protocol(item: pytest.Item, nextitem: pytest.Item | None) -> 
 
 
 def summary(prefix: str) -> str:
-    """CPU seconds per test module, largest first, from the files the plugin wrote under `prefix`."""
+    """CPU seconds per test module, largest first, from the files the plugin wrote under `prefix`; then the xdist
+    groups (tests that run on one worker, one after another), the longest first."""
     folder, stem = Path(prefix).parent, Path(prefix).name
     rows: dict[str, list[float]] = {}
+    groups: dict[str, list[float]] = {}
     for path in sorted(folder.glob(f"{stem}.*.jsonl")):
         for line in path.read_text(encoding="utf-8").splitlines():
             record = json.loads(line)
@@ -74,6 +79,11 @@ def summary(prefix: str) -> str:
             row[1] += record["own"]
             row[2] += record["children"]
             row[3] += record["processes"]
+            if record.get("group"):
+                group = groups.setdefault(record["group"], [0, 0.0, 0.0])
+                group[0] += 1
+                group[1] += record["own"] + record["children"]
+                group[2] += record["wall"]
     lines = [f"{'module':56} {'tests':>5} {'own s':>8} {'children s':>10} {'CPU s':>8} {'processes':>9}"]
     total = [0.0, 0.0, 0.0, 0.0]
     for module, (tests, own, children, processes) in sorted(rows.items(), key=lambda kv: -(kv[1][1] + kv[1][2])):
@@ -81,6 +91,9 @@ def summary(prefix: str) -> str:
         total = [a + b for a, b in zip(total, (tests, own, children, processes), strict=True)]
     tests, own, children, processes = total
     lines.append(f"{'total':56} {tests:5.0f} {own:8.1f} {children:10.1f} {own + children:8.1f} {processes:9.0f}")
+    lines.append(f"\n{'xdist group':56} {'tests':>5} {'CPU s':>8} {'wall s':>10}")
+    for name, (tests, cpu, wall) in sorted(groups.items(), key=lambda kv: -kv[1][1])[:10]:
+        lines.append(f"{name:56} {tests:5.0f} {cpu:8.1f} {wall:10.1f}")
     return "\n".join(lines)
 
 

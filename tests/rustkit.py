@@ -33,6 +33,7 @@ __all__ = [
     "Record",
     "cargo",
     "eds_text",
+    "has_tool",
     "render_rust",
     "require",
     "run",
@@ -66,17 +67,24 @@ def _works(*command: str) -> bool:
     return result.returncode == 0
 
 
+_PROBES = {
+    "cargo": ("cargo", "--version"),
+    "rustc": ("rustc", "--version"),
+    "rustfmt": ("rustfmt", "--version"),
+    "clippy": ("cargo", "clippy", "--version"),
+    "clippy-driver": ("clippy-driver", "--version"),
+}
+
+
+def has_tool(component: str) -> bool:
+    """Whether `component` (one of `cargo`, `rustc`, `rustfmt`, `clippy`, `clippy-driver`) is installed and runs."""
+    return _works(*_PROBES[component])
+
+
 def require(*components: str) -> None:
     """Skip the test unless every one of `cargo`, `rustc`, `rustfmt`, `clippy` is installed."""
-    commands = {
-        "cargo": ("cargo", "--version"),
-        "rustc": ("rustc", "--version"),
-        "rustfmt": ("rustfmt", "--version"),
-        "clippy": ("cargo", "clippy", "--version"),
-        "clippy-driver": ("clippy-driver", "--version"),
-    }
     for component in components:
-        if not _works(*commands[component]):
+        if not has_tool(component):
             pytest.skip(
                 f"{component} is not installed (rustup component add {component.split('-')[0]} needs the network)"
             )
@@ -101,8 +109,13 @@ def run(command: Sequence[str], cwd: Path, timeout: float = TIMEOUT) -> subproce
     return subprocess.run(list(command), cwd=cwd, capture_output=True, text=True, timeout=timeout, env=_env())
 
 
+# The dev and test profiles as cargo has them (overflow checks and debug assertions on), without debug info and
+# incremental state, which no test reads: they cost most of a build of the generated modules' large tables.
+_PROFILE = {"CARGO_PROFILE_DEV_DEBUG": "0", "CARGO_PROFILE_TEST_DEBUG": "0", "CARGO_INCREMENTAL": "0"}
+
+
 def cargo(crate: Path, *args: str, env: Mapping[str, str] | None = None) -> subprocess.CompletedProcess[str]:
-    env = _env() | {"CARGO_TARGET_DIR": str(target_dir())} | dict(env or {})
+    env = _env() | _PROFILE | {"CARGO_TARGET_DIR": str(target_dir())} | dict(env or {})
     command = [find_tool("cargo") or "cargo", "--offline", *args]
     return subprocess.run(command, cwd=crate, capture_output=True, text=True, timeout=TIMEOUT, env=env)
 

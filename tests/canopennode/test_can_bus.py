@@ -130,7 +130,7 @@ def test_python_canopen_reads_writes_and_receives_a_tpdo(tmp_path: Path) -> None
         network.connect(interface="virtual", channel=channel)
         node = canopen.RemoteNode(NODE_ID, str(eds))
         network.add_node(node)
-        node.sdo.RESPONSE_TIMEOUT = 2.0
+        node.sdo.RESPONSE_TIMEOUT = 5.0  # a busy machine must not turn a slow answer into a failure
 
         checked = 0
         for index, subindex, var in readable_defaults(node):

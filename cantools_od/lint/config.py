@@ -192,8 +192,6 @@ def _codes(table: dict[str, object], key: str, path: Path) -> tuple[str, ...]:
 
 def check_selectors(selectors: tuple[str, ...]) -> None:
     """Raise UnknownName for a selector that is no rule code, code prefix (`EDS`, `PDO0`) or family name."""
-    if not selectors:
-        return
     from .codes import FAMILIES, load
     from .codes import codes as all_codes
     from .rules import RULES

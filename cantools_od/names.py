@@ -3,7 +3,6 @@ error that names the closest valid ones, never silently ignored."""
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Callable, Collection, Iterable
 
 
@@ -17,6 +16,8 @@ class UnknownName(ValueError):
 
 def suggest(name: str, valid: Collection[str], hint: str = "") -> str:
     """`did you mean A, B?` with the valid names closest to `name`, else `hint` or a few valid names."""
+    import difflib  # only for a mistake: start-up counts
+
     by_folded = {v.casefold(): v for v in valid}
     close = difflib.get_close_matches(name.casefold(), list(by_folded), n=3, cutoff=0.5)
     if close:

@@ -228,6 +228,35 @@ def test_duplicates_warn_and_last_wins() -> None:
     assert codes(device) == ["EDS002", "EDS002"]
 
 
+def test_repeated_sections_written_plainly_are_merged() -> None:
+    # Each section alone is written plainly (sorted by a plan per list of keys): the merged one is not.
+    device = loads(b"[2000]\nParameterName=A\nDataType=0x0005\n[2000]\nAccessType=ro\nDefaultValue=3\n")
+    obj = device.objects[0x2000]
+    assert (obj.name, obj.data_type, obj.access, obj.default) == ("A", 5, AccessType.RO, 3)
+    assert obj.origin is not None
+    assert [obj.origin.where(key) for key in ("DataType", "AccessType", "DefaultValue")] == [
+        (3, 1, 10),
+        (5, 1, 12),
+        (6, 1, 14),
+    ]
+    assert codes(device) == ["EDS002"]
+
+
+def test_sections_written_alike_keep_their_own_positions_and_spellings() -> None:
+    section = "[{}]\nparametername=A\nDataType=0x0005\nAccessType={}\n"
+    device = loads((section.format(2000, "xx") + "\n" + section.format(2001, "yy")).encode())
+    for index, line in ((0x2000, 1), (0x2001, 6)):
+        origin = device.objects[index].origin
+        assert origin is not None and origin.line == line
+        assert origin.where("AccessType") == (line + 3, 1, 12)
+        assert origin.spelled == {"ParameterName": "parametername"}
+        assert device.objects[index].extra == {"AccessType": "xx" if index == 0x2000 else "yy"}
+    assert [(d.code, d.location.line, d.location.column) for d in device.diagnostics] == [
+        ("EDS030", 4, 12),
+        ("EDS030", 9, 12),
+    ]
+
+
 def test_stray_lines_and_broken_headers_are_diagnosed() -> None:
     device = loads(b"junk before\n[2000\nParameterName=A\nnot an entry\n")
     assert sorted(codes(device)) == ["EDS101", "EDS101", "EDS102"]

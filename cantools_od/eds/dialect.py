@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from ..model import Dialect
 from .ini import IniFile, IniSection
@@ -34,14 +35,15 @@ def detect_dialect(parsed: IniFile) -> Dialect:
 class DialectEvidence:
     """detect_dialect over sections seen one at a time, for a reader that does not keep them."""
 
-    def __init__(self) -> None:
+    def __init__(self, markers: bool = True) -> None:
         self.lely = False
         self.other: Dialect | None = None  # the first evidence of another family, in file order
+        self.markers = markers  # False: the text has none of MARKERS, so only keys can tell
 
     def see(self, section: IniSection) -> None:
         if not self.lely:
             self.lely = _lely(section)
-        if self.other is None:
+        if self.other is None and (self.markers or section.plain is None or _telling_keys(section.plain[0])):
             self.other = _other(section)
 
     def dialect(self, top: list[str]) -> Dialect:
@@ -78,8 +80,16 @@ def _other(section: IniSection) -> Dialect | None:
     return None
 
 
+@lru_cache(maxsize=256)  # the few lists of keys of a file's sections
+def _telling_keys(keys: tuple[str, ...]) -> bool:
+    """Whether any of the keys is one whose value `_other` looks at."""
+    return any(key.lower() in ("createdby", "edsversion") for key in keys)
+
+
 # Comments only CANopenNode's tools write (a match at the start, as `str.startswith`).
 _canopennode_comment = re.compile(";StorageLocation|;TPDODetectCos").match
+MARKERS = ("$", ";StorageLocation", ";TPDODetectCos")
+"""What a text must hold for `_other` to find evidence in anything but a key (`CreatedBy`, `EDSVersion`)."""
 _CANOPENNODE_TOOL = re.compile("canopen(node|editor)|libedssharp", re.IGNORECASE)
 
 

@@ -11,6 +11,7 @@ import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from itertools import islice
+from operator import itemgetter
 from typing import AnyStr, NamedTuple
 
 
@@ -37,6 +38,10 @@ class IniSection:
     stray: list[tuple[int, str]] = field(default_factory=list)  # lines that are no entry
     header_text: str = ""  # the header line as written, for diagnostics
     closed: bool = True  # the header has its "]"
+    plain: tuple[tuple[str, ...], tuple[str, ...]] | None = None
+    """(keys, values) of the entries when they are written plainly: each `key=value` without blanks around "="
+    or before the key, on the lines right after the header, with no comment among them (the layout of most
+    sections). `None` otherwise. Lets the reader sort the keys of sections alike once for all of them."""
 
 
 @dataclass
@@ -47,6 +52,7 @@ class IniFile:
     long_lines: list[tuple[int, int]] = field(default_factory=list)  # (line, length) over MAX_LINE
 
 
+_KEY, _VALUE = itemgetter(0), itemgetter(1)
 MAX_LINE = 255  # CiA 306: characters in a line, without its end
 
 
@@ -149,7 +155,10 @@ class Stream:
             )
             # Comments after a section's last entry stand above the next header.
             pending = []
-            _split_body(lines, first, 1, section.entries, pending, section.stray)
+            entries = section.entries
+            plain = _split_body(lines, first, 1, entries, pending, section.stray)
+            if plain and entries and entries[-1][2] - first == len(entries):  # on the lines after the header
+                section.plain = (tuple(map(_KEY, entries)), tuple(map(_VALUE, entries)))
             yield section
         self.trailing = pending
 
@@ -167,11 +176,24 @@ class Stream:
                 yield is_section, piece[start:], plain
 
 
+_NAMES_AFTER_LF = re.compile(rb"\n[ \t]*\[([^\]\r\n]*)")
+_FIRST_NAME_BYTES = re.compile(rb"[ \t]*\[([^\]\r\n]*)")
+_ASCII_SPACE = b" \t\n\r\x0b\x0c\x1c\x1d\x1e\x1f"  # what `str.strip` removes of ASCII
+
+
 def repeated_section_names(text: str | bytes) -> set[str]:
     """The names (lower case) of sections given more than once, found without splitting the text.
 
     Names are remembered by hash, which keeps this small for a large file; a rare collision only
     adds a name that is given once."""
+    if isinstance(text, bytes) and text.isascii() and text.count(b"\r") == text.count(b"\r\n"):
+        # The common case at C speed: ASCII, every line ending in LF or CRLF (so that a header line follows an LF,
+        # or starts the text), names folded as `str.strip().lower()` would. No name repeated ends it here.
+        first = _FIRST_NAME_BYTES.match(text)
+        listed = _NAMES_AFTER_LF.findall(text) + ([first.group(1)] if first is not None else [])
+        folded = [name.strip(_ASCII_SPACE).lower() for name in listed]
+        if len(set(folded)) == len(folded):
+            return set()
     names: Iterator[str] = (
         _header_names(text) if isinstance(text, str) else (n.decode("utf-8", "replace") for n in _header_names(text))
     )
@@ -189,10 +211,13 @@ def repeated_section_names(text: str | bytes) -> set[str]:
 
 def _split_body(
     lines: list[str], first: int, skip: int, entries: list[Entry], comments: list[str], stray: list[tuple[int, str]]
-) -> None:
+) -> bool:
+    """Sorts the lines into entries, comments and stray lines; whether every entry is written plainly (see
+    `IniSection.plain`, but for where the entries stand)."""
     line = first - 1 + skip
     new = tuple.__new__  # an Entry without the Python-level call of Entry(...): this loop runs once per line
     add = entries.append
+    plain = True
     for raw in islice(lines, skip, None):
         line += 1
         text = raw.strip(" \t")
@@ -205,14 +230,21 @@ def _split_body(
         if not equals:
             stray.append((line, text))
             continue
+        if comments:
+            above, plain = tuple(comments), False
+            comments.clear()
+        else:
+            above = ()
+        if raw[0] in " \t":
+            indent, plain = len(raw) - len(raw.lstrip(" \t")), False
+        else:
+            indent = 0
         bare_key = key.rstrip(" \t")
         bare_value = value.lstrip(" \t")
-        indent = len(raw) - len(raw.lstrip(" \t")) if raw[0] in " \t" else 0
-        above = tuple(comments) if comments else ()
         if bare_key is key and bare_value is value:  # no blanks around "=": strip gave back the same strings
             add(new(Entry, (key, value, line, indent + 1, indent + len(key) + 2, above, False)))
         else:
             value_col = indent + len(key) + 2 + len(value) - len(bare_value)
             add(new(Entry, (bare_key, bare_value, line, indent + 1, value_col, above, True)))
-        if comments:
-            comments.clear()
+            plain = False
+    return plain

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from ..model import Diagnostic, Severity
 from ..model.source import diagnostic, location
 
@@ -12,6 +14,8 @@ class Report:
         self.diagnostics: list[Diagnostic] = []
         self.layouts: dict[tuple[tuple[str, tuple[int, int, int]], ...], dict[str, tuple[int, int, int]]] = {}
         """Key layouts of sections read so far, so that sections written alike share one."""
+        self.plans: dict[tuple[int, tuple[str, ...]], Any] = {}
+        """How to sort the keys of plainly written sections, per key table and list of keys (sections.py)."""
         self.strings: dict[str, str] = {}
         """Texts read so far, so that a text written many times is held once."""
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import Any, NoReturn
+from typing import Any, NamedTuple, NoReturn
 
 from ..model import AccessType, ObjectKind, Origin, RawSection
 from ..model.assemble import assemble, construct, field_defaults
@@ -56,11 +56,49 @@ class Collected:
         return {"extra": self.extra, "comments": self.comments, "origin": self.origin}
 
 
+class _Plan(NamedTuple):
+    """How to sort the keys of sections written plainly with the same keys in the same order (see
+    `IniSection.plain`): made once per file for each such list of keys, kept by the report."""
+
+    table: dict[str, KeySpec]  # held, so that the id the plan is kept under stays this table's
+    steps: tuple[tuple[int, str, str | None, Kind], ...]  # (position, key, field, kind); field None: an extra key
+    layout: dict[str, tuple[int, int, int]]
+    spelled: dict[str, str]
+
+
+def _plan(keys: tuple[str, ...], table: dict[str, KeySpec], report: Report) -> _Plan | None:
+    """The plan for plain sections of `keys`; None when a key is given twice (the line by line path warns)."""
+    steps: list[tuple[int, str, str | None, Kind]] = []
+    layout: dict[str, tuple[int, int, int]] = {}
+    spelled: dict[str, str] = {}
+    for position, key in enumerate(keys):
+        spec = table.get(normalize(key))
+        name = spec[0] if spec is not None else key
+        if name in layout:
+            return None
+        layout[name] = (position + 1, 1, len(key) + 2)
+        if spec is None:
+            steps.append((position, key, None, _STR))
+            continue
+        if key != name:
+            spelled[name] = key
+        steps.append((position, key, spec[1], spec[2]))
+    return _Plan(table, tuple(steps), report.layouts.setdefault(tuple(layout.items()), layout), spelled)
+
+
 def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> Collected:
     origin = assemble(Origin, {"file": report.file, "line": section.line, "column": section.column}, _ORIGIN)
     collected = Collected(origin)
     if section.comments:
         collected.comments[""] = section.comments
+    if section.plain is not None:
+        plan_key = (id(table), section.plain[0])
+        plan = report.plans.get(plan_key, False)
+        if plan is False:
+            plan = report.plans[plan_key] = _plan(section.plain[0], table, report)
+        if plan is not None:
+            _collect_plain(section, plan, collected, report)
+            return collected
     layout: dict[str, tuple[int, int, int]] = {}  # key positions relative to the header line
     spelled: dict[str, str] = {}  # canonical name → the spelling its last entry used, when not canonical
     fields, extra, comments, deferred = collected.fields, collected.extra, collected.comments, collected.deferred
@@ -89,17 +127,45 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
             # Names repeat across sections ("Highest sub-index supported"): one string for each.
             fields[field] = strings.setdefault(value, value)
         else:
-            try:
-                fields[field] = convert(value, kind)
-            except ValueError as error:
-                report.error("EDS030", f"{key}: {error}", line, value_col)
-                extra[key] = value
+            _convert_into(collected, field, key, value, kind, report, line, value_col)
     # Sections written by one tool share few layouts: one dict each saves a dict of tuples per section.
     # Set in the reader's own instance directly: pydantic's __setattr__ costs more than the rest of a line.
     origin.__dict__["layout"] = report.layouts.setdefault(tuple(layout.items()), layout)
     if spelled:
         origin.__dict__["spelled"] = spelled
     return collected
+
+
+def _collect_plain(section: IniSection, plan: _Plan, collected: Collected, report: Report) -> None:
+    """`collect` of a section written plainly, by its plan: what the loop of `collect` would do, without
+    looking each key up again."""
+    values = section.plain[1] if section.plain is not None else ()
+    fields, extra, deferred, strings = collected.fields, collected.extra, collected.deferred, report.strings
+    for position, key, field, kind in plan.steps:
+        value = values[position]
+        if field is None:
+            extra[key] = value
+        elif kind is _VALUE:
+            deferred[field] = section.entries[position]
+        elif kind is _STR:
+            fields[field] = strings.setdefault(value, value)
+        else:
+            _convert_into(collected, field, key, value, kind, report, section.line + position + 1, len(key) + 2)
+    origin = collected.origin
+    origin.__dict__["layout"] = plan.layout
+    if plan.spelled:
+        origin.__dict__["spelled"] = dict(plan.spelled)
+
+
+def _convert_into(
+    collected: Collected, field: str, key: str, value: str, kind: Kind, report: Report, line: int, column: int
+) -> None:
+    """A value of a kind known without the data type into its field; one it is not, kept as text and reported."""
+    try:
+        collected.fields[field] = convert(value, kind)
+    except ValueError as error:
+        report.error("EDS030", f"{key}: {error}", line, column)
+        collected.extra[key] = value
 
 
 def _repeated(

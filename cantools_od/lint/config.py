@@ -10,9 +10,7 @@ integer-radix = "as-written"       # how `fmt` spells integers; or a table by ke
 
 from __future__ import annotations
 
-import difflib
 import fnmatch
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -87,6 +85,8 @@ def find_config(start: Path) -> Path | None:
 def _has_table(pyproject: Path) -> bool:
     """Whether a pyproject.toml has a `[tool.cantools-od]` table; a malformed one that names it is taken, so that
     reading it reports the error."""
+    import tomllib  # here: most lint runs find no configuration, and start-up counts
+
     try:
         text = pyproject.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError):
@@ -106,6 +106,8 @@ def _table(path: Path | None) -> tuple[Path | None, dict[str, Any]]:
         path = find_config(path.resolve())
     if path is None:
         return None, {}
+    import tomllib
+
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except OSError as error:
@@ -154,6 +156,8 @@ def _radix(value: object, where: str) -> Radix:
 
 
 def _closest(name: str, names: tuple[str, ...]) -> str:
+    import difflib  # only for a mistake
+
     found = difflib.get_close_matches(name, names, n=1)
     return f" (did you mean {found[0]!r}?)" if found else ""
 

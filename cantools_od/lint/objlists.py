@@ -6,7 +6,6 @@ from collections.abc import Callable, Collection, Iterator
 from dataclasses import replace
 
 from ..eds import keys
-from ..eds.preserve import respell
 from ..model import Device, Location, ObjectList, Severity
 from ..model.cia301.objects import DATA_TYPE_AREA, MANUFACTURER_AREA
 from ..model.cia301.objects import MANDATORY as MANDATORY_INDICES
@@ -462,6 +461,8 @@ def _free_numbers(found: ObjectList) -> Iterator[int]:
 
 def _fix_repeats(name: str) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
+        from ..eds.preserve import respell  # the writers load only when a fix is applied
+
         found = object_list(device, name)
         if found is None or not found.repeats:
             return  # applied already

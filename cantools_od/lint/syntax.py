@@ -5,13 +5,11 @@ CiA 306 §4: file structure, [FileInfo], [DeviceInfo]; [Comments] §4.6.5.
 
 from __future__ import annotations
 
-import difflib
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from ..eds import keys
-from ..eds.preserve import canonical_section_name, respell
 from ..model import Device, Location, Section, Severity
 from .common import OBJECT_FIELDS, explicit_objects, explicit_vars, file_start, invalid, present, where
 from .rules import Context, Finding, Fix, declare, rule
@@ -39,6 +37,8 @@ _TIME = re.compile(r"(0[1-9]|1[0-2]):[0-5][0-9](AM|PM)\Z")
 
 
 def _suggest(key: str, known: Iterable[str]) -> str:
+    import difflib  # here, as the writers below: a lint run without such a finding does not load them
+
     by_lower = {k.lower(): k for k in known}
     close = difflib.get_close_matches(key.lower(), list(by_lower), n=2, cutoff=0.75)
     return f"; did you mean {' or '.join(by_lower[c] for c in close)}?" if close else ""
@@ -292,6 +292,8 @@ class Spelling:
         return Fix(f"write the {what} as {self.canonical}", not _python_canopen_reads(self.canonical), self._respell)
 
     def _respell(self, device: Device) -> None:
+        from ..eds.preserve import respell
+
         respell(device, self.where.line, self.where.column, self.written, self.canonical)
 
 
@@ -317,6 +319,8 @@ def spellings(ctx: Context) -> Iterator[Spelling]:
             continue
         for canonical, written in origin.spelled.items():
             if canonical == "":  # the section's own name; its text starts after the "["
+                from ..eds.preserve import canonical_section_name
+
                 header = origin.header()
                 where = Location(file=header.file, line=header.line, column=header.column + 1)
                 yield Spelling(written, canonical_section_name(written), where, True)

@@ -5,12 +5,13 @@
 
 A real client (pygls's) starts the server process, opens the file, waits for its diagnostics, then
 makes one-line edits (DefaultValue lines of objects spread over the file rewritten) and times each
-from the didChange notification to the diagnostics: the quick ones (published without a version,
-from a check of the edited object alone) and the exact ones (published with the edit's version,
-from reading and linting the whole text). Both times include the server's debounce (DEBOUNCE in
-cantools_od/lsp/server.py) and the protocol. Prints the open time and the median and worst edit
-times in ms, the load average, and the CPU time one re-check takes in this process (quick and full),
-which depends less on what else the machine runs.
+from the didChange notification to the diagnostics: the exact ones (published with the edit's
+version: the edited object read again, the rest of the device kept, all of it linted; see
+cantools_od/lsp/incremental.py) and, for an edit that path does not cover, the quick ones first
+(published without a version, from a check of the edited object alone). Both times include the
+server's debounce (DEBOUNCE in cantools_od/lsp/server.py) and the protocol. Prints the open time
+and the median and worst edit times in ms, the load average, and the CPU time one re-check takes
+in this process (incremental, full and quick), which depends less on what else the machine runs.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import os
+import re
 import statistics
 import sys
 import time
@@ -28,6 +30,7 @@ from pygls.lsp.client import LanguageClient
 
 from cantools_od.eds.decode import decode_as
 
+_NUMBER = re.compile(r"(?:0x[0-9a-f]+|[0-9]+)\Z", re.IGNORECASE)
 CORPUS = Path(__file__).resolve().parent.parent.parent / "shared" / "eds-corpus" / "eds"
 
 
@@ -62,8 +65,8 @@ def _largest() -> Path:
 
 
 def _edit_lines(lines: list[str], edits: int) -> list[int]:
-    """DefaultValue lines with a decimal value, spread evenly over the file."""
-    found = [n for n, t in enumerate(lines) if t.startswith("DefaultValue=") and t[13:].strip().isdigit()]
+    """DefaultValue lines with a number (decimal or hex), spread evenly over the file."""
+    found = [n for n, t in enumerate(lines) if t.startswith("DefaultValue=") and _NUMBER.match(t[13:].strip())]
     return [found[k * len(found) // edits] for k in range(edits)]
 
 
@@ -106,16 +109,18 @@ async def run(path: Path, edits: int) -> dict[str, list[float]]:
 
 
 def cpu(path: Path, edits: int) -> dict[str, list[float]]:
-    """CPU time (ms) of one full re-check and of one quick check, in this process, for the same edits."""
+    """CPU time (ms) of one re-check in this process, for the same edits: the incremental one the
+    server makes (only the edited object read again), the full one (the whole text read) and the quick one."""
     from cantools_od.lint import LintOptions
     from cantools_od.lsp.document import Encoding, analyse
+    from cantools_od.lsp.incremental import reanalyse
     from cantools_od.lsp.quick import quick_findings
 
     data = path.read_bytes()
     text, codec, _ = decode_as(data)
     encoding, uri, options = Encoding(codec, data.startswith(b"\xef\xbb\xbf")), path.resolve().as_uri(), LintOptions()
     before = analyse(uri, text, 1, encoding, options)
-    full, quick = [], []
+    spent: dict[str, list[float]] = {"incremental": [], "full": [], "quick": []}
     for version, line in enumerate(_edit_lines(text.splitlines(), edits), 2):
         lines = before.text.splitlines(keepends=True)
         ending = lines[line][len(lines[line].rstrip("\r\n")) :]
@@ -123,11 +128,16 @@ def cpu(path: Path, edits: int) -> dict[str, list[float]]:
         edited = "".join(lines)
         started = time.process_time()
         quick_findings(before, edited, uri, encoding, options)
-        quick.append((time.process_time() - started) * 1000)
+        spent["quick"].append((time.process_time() - started) * 1000)
         started = time.process_time()
-        before = analyse(uri, edited, version, encoding, options)
-        full.append((time.process_time() - started) * 1000)
-    return {"full": full, "quick": quick}
+        found = reanalyse(before, uri, edited, version, encoding, options)
+        if found is not None:
+            spent["incremental"].append((time.process_time() - started) * 1000)
+        started = time.process_time()
+        fresh = analyse(uri, edited, version, encoding, options)
+        spent["full"].append((time.process_time() - started) * 1000)
+        before = found or fresh
+    return spent
 
 
 def _times(values: list[float]) -> str:
@@ -139,7 +149,7 @@ def _times(values: list[float]) -> str:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("file", nargs="?", type=Path)
-    parser.add_argument("--edits", type=int, default=10)
+    parser.add_argument("--edits", type=int, default=12)
     args = parser.parse_args()
     path = args.file or _largest()
     load = os.getloadavg()[0]
@@ -151,7 +161,9 @@ def main() -> None:
     print(f"  open to diagnostics {result['open'][0]:.0f} ms")
     print(f"  edit to quick diagnostics: {_times(result['quick'])} ({len(result['quick'])} of {args.edits} edits)")
     print(f"  edit to exact diagnostics: {_times(result['exact'])}")
-    print(f"  CPU per re-check in process: full {_times(spent['full'])}; quick {_times(spent['quick'])}")
+    print(f"  CPU per re-check in process: incremental {_times(spent['incremental'])} "
+          f"({len(spent['incremental'])} of {args.edits} edits); full {_times(spent['full'])}; "
+          f"quick {_times(spent['quick'])}")  # fmt: skip
 
 
 if __name__ == "__main__":

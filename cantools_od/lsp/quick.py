@@ -120,23 +120,28 @@ def _edited_object(old: _Layout, text: str) -> tuple[int, int, int, _Layout] | N
     return index, old.text.count("\n", 0, line_start), lines, layout
 
 
-def quick_findings(
-    old: Analysis, text: str, uri: str, encoding: Encoding, options: LintOptions
-) -> list[Finding] | None:
-    """The quick findings for `text`, an edit of `old`'s text; None when the edit is not one the quick
-    answer covers (the full check alone answers)."""
-    if old.device is None or old.device.file_format != "eds" or text == old.text:
-        return None  # a save (the configuration may have changed): the full check alone
-    if any(b in text for b in _OTHER_BREAKS):
-        return None
-    if text.count("\r") != text.count("\r\n"):  # lines that end in CR alone: headers are found after LF only
+def object_edit(old: Analysis, text: str) -> tuple[_Layout, tuple[int, int, int, _Layout]] | None:
+    """The old text's layout and what `_edited_object` says of the edit, when `text` is an edit inside
+    one object of `old`'s EDS/DCF text; None otherwise (and for a save: the configuration may have changed)."""
+    if old.device is None or old.device.file_format != "eds" or text == old.text or not plain_lines(text):
         return None
     before = _layout(old.text)
     edited = _edited_object(before, text)
     if edited is None:
         return None
-    index, start, delta, after = edited
-    _keep(after)
+    _keep(edited[3])
+    return before, edited
+
+
+def quick_findings(
+    old: Analysis, text: str, uri: str, encoding: Encoding, options: LintOptions
+) -> list[Finding] | None:
+    """The quick findings for `text`, an edit of `old`'s text; None when the edit is not one the quick
+    answer covers (the full check alone answers)."""
+    edit = object_edit(old, text)
+    if edit is None or old.device is None:
+        return None
+    before, (index, start, delta, after) = edit
     try:
         device = read(uri, encoding.bytes(_only(after, _context(after, index))))
         device.dialect = old.device.dialect  # the whole file's, which the object alone may not show
@@ -148,6 +153,13 @@ def quick_findings(
     moved = [_moved(f, start, delta) for f in old.findings if f.location.line not in old_spans or f.code in whole]
     ours = [f for f in found if f.location.line in kept and f.code not in whole]
     return sorted(set(moved + ours), key=_order)
+
+
+def plain_lines(text: str) -> bool:
+    """Lines end in LF or CRLF only: where the layout finds headers, the reader does too."""
+    if any(b in text for b in _OTHER_BREAKS):
+        return False
+    return text.count("\r") == text.count("\r\n")  # lines that end in CR alone: headers are found after LF only
 
 
 _MAPPED = re.compile(r"=[ \t]*(?:0x([0-9a-f]{5,8})|([1-9][0-9]{4,9}))[ \t]*\r?$", re.IGNORECASE | re.MULTILINE)
@@ -196,17 +208,47 @@ def _keep(layout: _Layout) -> None:
     _LAYOUTS[id(layout.text)] = layout
 
 
-def _only(layout: _Layout, kept: set[int]) -> str:
-    """The text with the sections of objects not `kept` blanked, line ends kept."""
-    text = layout.text
-    ending = "\r\n" if text.count("\r\n") == text.count("\n") else "\n"
-    pieces = [text[: layout.starts[0]] if layout.starts else text]
-    for at, owner in enumerate(layout.objects):
-        begin = layout.starts[at]
-        finish = layout.starts[at + 1] if at + 1 < len(layout.starts) else len(text)
-        whole = owner is None or owner in kept
-        pieces.append(text[begin:finish] if whole else ending * text.count("\n", begin, finish))
+_LIST = re.compile(r"[ \t]*\[[ \t]*(?:mandatory|optional|manufacturer)objects[ \t]*\]", re.IGNORECASE)
+
+
+def _only(layout: _Layout, kept: set[int], lists: bool = True) -> str:
+    """The text with the sections of objects not `kept` blanked (and the object lists, unless `lists`),
+    line ends kept. The comment lines after a section's last entry stand above the next header: they
+    are kept when that section is."""
+    text, starts, objects = layout.text, layout.starts, layout.objects
+    wanted = [
+        owner in kept if owner is not None else lists or _LIST.match(text, starts[at]) is None
+        for at, owner in enumerate(objects)
+    ]
+    pieces = [_blanked(text[: starts[0]] if starts else text, 0, True, not wanted or wanted[0])]
+    for at, whole in enumerate(wanted):
+        body = text[starts[at] : starts[at + 1] if at + 1 < len(starts) else len(text)]
+        pieces.append(_blanked(body, 1, whole, at + 1 >= len(wanted) or wanted[at + 1]))
     return "".join(pieces)
+
+
+def _blanked(body: str, skip: int, entries: bool, comments: bool) -> str:
+    """A section's text (its header, `skip` lines, and its entries) kept or blanked, and the comment
+    lines after its last entry kept or blanked, each line's end kept."""
+    if entries and comments:
+        return body
+    if not entries and not comments:
+        count, returns = body.count("\n"), body.count("\r")
+        if returns == 0 or returns == count == body.count("\r\n"):
+            return ("\r\n" if returns else "\n") * count
+    lines = body.splitlines(keepends=True)
+    last = skip - 1  # the last line that is an entry (key=value), as the reader tells them
+    for number in range(len(lines) - 1, skip - 1, -1):
+        line = lines[number].strip(" \t\r\n")
+        if line and line[0] not in ";#" and "=" in line:
+            last = number
+            break
+    out = []
+    for number, line in enumerate(lines):
+        bare = line.strip(" \t\r\n")
+        keep = entries if number <= last or not bare or bare[0] not in ";#" else comments
+        out.append(line if keep else line[len(line.rstrip("\r\n")) :])
+    return "".join(out)
 
 
 def _moved(finding: Finding, start: int, delta: int) -> Finding:

@@ -17,6 +17,7 @@ from ..lint import LintOptions
 from ..model.cia301.cobid import ALL_NODE_IDS
 from .diagnostics import diagnostics
 from .document import Analysis, Encoding, analyse, path_of
+from .incremental import reanalyse
 from .positions import Lines
 from .quick import quick_findings
 
@@ -90,24 +91,34 @@ class OdServer(LanguageServer):
         state.pending = None
         document = self.workspace.get_text_document(uri)
         text, version = document.source, document.version
-        loop = asyncio.get_running_loop()
-        if state.analysis is not None:
-            await self.publish_quick(uri, state.analysis, text, version)
-        try:
-            analysis = await loop.run_in_executor(
-                self.worker, analyse, uri, text, version, state.encoding, self.options
-            )
-        except Exception as error:  # a bug must not stop the server: say it in one line
-            analysis = Analysis(
-                version, text, None, refusal=("LNT001", f"cannot check: {type(error).__name__}: {error}")
-            )
-            print(f"cantools-od lsp: {uri}: {type(error).__name__}: {error}", file=sys.stderr)
+        analysis = await self.analysed(uri, state, text, version)
         if self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
             return
         state.analysis, state.lines, state.cache = analysis, Lines(text), {}
         self.text_document_publish_diagnostics(
             types.PublishDiagnosticsParams(uri, diagnostics(analysis, state.lines, self.rules_url), version)
         )
+
+    async def analysed(self, uri: str, state: Open, text: str, version: int | None) -> Analysis:
+        """The text read and linted in the worker: after an edit inside one object, only that object read
+        again (incremental.py); otherwise the quick findings published first, then the whole text read."""
+        loop = asyncio.get_running_loop()
+        if state.analysis is not None:
+            try:
+                found = await loop.run_in_executor(
+                    self.worker, reanalyse, state.analysis, uri, text, version, state.encoding, self.options
+                )
+            except Exception as error:  # the whole text read answers all the same
+                print(f"cantools-od lsp: {uri}: incremental check: {type(error).__name__}: {error}", file=sys.stderr)
+                found = None
+            if found is not None:
+                return found
+            await self.publish_quick(uri, state.analysis, text, version)
+        try:
+            return await loop.run_in_executor(self.worker, analyse, uri, text, version, state.encoding, self.options)
+        except Exception as error:  # a bug must not stop the server: say it in one line
+            print(f"cantools-od lsp: {uri}: {type(error).__name__}: {error}", file=sys.stderr)
+            return Analysis(version, text, None, refusal=("LNT001", f"cannot check: {type(error).__name__}: {error}"))
 
     async def publish_quick(self, uri: str, before: Analysis, text: str, version: int | None) -> None:
         """Publish the quick findings of an edit inside one object (quick.py), without a version: the

@@ -14,6 +14,7 @@ import pty
 import re
 import select
 import shutil
+import struct
 import subprocess
 import termios
 import time
@@ -208,3 +209,71 @@ def test_the_emacs_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Pat
     assert seen["mode"] == "canopen-eds-mode" and seen["eglot"] is True
     assert {(n, code) for n, code in seen["first"]} == first
     assert {(n, code) for n, code in seen["after"]} == after
+
+
+def _published(log: Path) -> list[set[tuple[int, str]]]:
+    """Each publishDiagnostics Helix's log shows (`hx -v`), as (line from 1, code) pairs, in order."""
+    found = []
+    text = log.read_text(encoding="utf-8", errors="replace") if log.exists() else ""
+    for line in text.splitlines():
+        at = line.find("<- {")
+        if at < 0 or "textDocument/publishDiagnostics" not in line:
+            continue
+        params = json.loads(line[at + 3 :])["params"]
+        found.append({(d["range"]["start"]["line"] + 1, str(d.get("code"))) for d in params["diagnostics"]})
+    return found
+
+
+def _helix_session(command: list[str], cwd: Path, environment: dict[str, str], log: Path, repair: tuple[int, str]
+                   ) -> tuple[set[tuple[int, str]], set[tuple[int, str]]]:  # fmt: skip
+    """Helix on a terminal of its own: once the server's diagnostics show, the keys that replace line
+    `repair[0]` by `repair[1]`; once fewer show, `:q!`. What it showed first and last."""
+    main, side = pty.openpty()
+    fcntl.ioctl(side, termios.TIOCSWINSZ, struct.pack("HHHH", 40, 120, 0, 0))
+    process = subprocess.Popen(
+        command, cwd=cwd, env=environment, stdin=side, stdout=side, stderr=side, start_new_session=True,
+        preexec_fn=lambda: fcntl.ioctl(0, termios.TIOCSCTTY, 0),
+    )  # fmt: skip
+    os.close(side)
+    first: set[tuple[int, str]] = set()
+    after: set[tuple[int, str]] = set()
+    deadline, count = time.monotonic() + WAIT, 0
+    try:
+        while process.poll() is None and time.monotonic() < deadline:
+            if select.select([main], [], [], 0.2)[0]:
+                os.read(main, 65536)
+            published = _published(log)
+            if not first and published and len(published[-1]) >= 2:
+                first, count = published[-1], len(published)
+                for keys in (f":{repair[0]}\r", "x", "c", repair[1] + "\r", "\x1b"):
+                    os.write(main, keys.encode())
+                    time.sleep(0.3)  # an escape followed at once by a key reads as Alt+key
+            elif first and len(published) > count and len(published[-1]) < len(first):
+                after = published[-1]
+                os.write(main, b":q!\r")
+                deadline = min(deadline, time.monotonic() + 10)
+    finally:
+        if process.poll() is None:
+            process.kill()
+        process.wait()
+        os.close(main)
+    return first, after
+
+
+def test_the_helix_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Path) -> None:
+    hx = shutil.which("hx")
+    if hx is None:
+        pytest.skip("Helix (hx) is not installed on this machine")
+    (snippet,) = _snippets("toml", "**Helix**")
+    config = tmp_path / ".config" / "helix"
+    config.mkdir(parents=True)
+    (config / "languages.toml").write_text(snippet, encoding="utf-8")
+    language = re.search(r'^name = "([^"]+)"', snippet, re.MULTILINE)
+    assert language is not None
+    environment = _environment(tmp_path, TERM="xterm", XDG_CONFIG_HOME=str(tmp_path / ".config"))
+    health = subprocess.run([hx, "--health", language.group(1)], env=environment, capture_output=True, text=True)
+    assert "cantools-od" in health.stdout and "✘ cantools-od" not in health.stdout, health.stdout
+    path, line, text, first, after = _case(tmp_path)
+    log = tmp_path / "helix.log"
+    seen = _helix_session([hx, "-v", "--log", str(log), path.name], tmp_path, environment, log, (line, text))
+    assert seen == (first, after)

@@ -16,8 +16,15 @@ from .decode import decode_as
 
 class Hints:
     def __init__(self, original: bytes | None, xml: bool = False) -> None:
-        self._lines = ini.split_lines(decode_as(original)[0]) if original else []
+        self._original = original
         self._xml = xml
+        self._split: list[str] | None = None  # the lines, split when a hint is first asked for
+
+    @property
+    def _lines(self) -> list[str]:
+        if self._split is None:
+            self._split = ini.split_lines(decode_as(self._original)[0]) if self._original else []
+        return self._split
 
     @classmethod
     def of(cls, device: Device) -> Hints:
@@ -27,7 +34,7 @@ class Hints:
         return cls(device._original, xml=device.file_format == "xdd")
 
     def text(self, section: Section, key: str) -> str | None:
-        where = section.origin.where(key) if section.origin is not None and self._lines else None
+        where = section.origin.where(key) if section.origin is not None and self._original else None
         if where is None or not 0 < where[0] <= len(self._lines) or where[2] < 1:
             return None
         line = self._lines[where[0] - 1]

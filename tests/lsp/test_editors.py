@@ -14,6 +14,8 @@ import pty
 import re
 import select
 import shutil
+import signal
+import socket
 import struct
 import subprocess
 import termios
@@ -22,7 +24,7 @@ from pathlib import Path
 
 import pytest
 
-from support import EXAMPLES, ROOT, cli_command
+from support import EXAMPLES, ROOT, cli_command, corpus_file
 
 WAIT = 60  # seconds an editor has for its work (the probes give up sooner)
 _PROBE_LUA = r"""
@@ -107,9 +109,10 @@ def _case(tmp_path: Path) -> tuple[Path, int, str, set[tuple[int, str]], set[tup
     return path, repaired + 1, good, _lint(path), _lint(check)
 
 
-def _lint(path: Path) -> set[tuple[int, str]]:
+def _lint(path: Path, status: int = 1) -> set[tuple[int, str]]:
+    """lint's (line, code) findings for `path`, which must exit with `status` (1: errors found)."""
     done = subprocess.run([*cli_command(), "lint", "--format", "json", str(path)], capture_output=True, text=True)
-    assert done.returncode == 1, done.stderr
+    assert done.returncode == status, done.stderr
     return {(int(f["line"]), str(f["code"])) for f in json.loads(done.stdout)}
 
 
@@ -277,3 +280,113 @@ def test_the_helix_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Pat
     log = tmp_path / "helix.log"
     seen = _helix_session([hx, "-v", "--log", str(log), path.name], tmp_path, environment, log, (line, text))
     assert seen == (first, after)
+
+
+def _vscode_tools() -> tuple[str, str] | str:
+    """code-server and Chromium, or why the VS Code test cannot run here."""
+    code_server = os.environ.get("CODE_SERVER") or shutil.which("code-server")
+    chromium = os.environ.get("CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
+    if code_server is None:
+        return "code-server (VS Code OSS in a browser) is not installed; set CODE_SERVER or put it on PATH"
+    if chromium is None:
+        return "Chromium is not installed; set CHROMIUM or put chromium on PATH"
+    if shutil.which("npx") is None:
+        return "npm/npx is not on this machine"
+    found = subprocess.run(["node", "-e", "require.resolve('playwright-core')"], capture_output=True, timeout=WAIT)
+    if found.returncode != 0:
+        return "playwright-core is not found by node; install it and set NODE_PATH to its node_modules"
+    return code_server, chromium
+
+
+def _readme_build(tmp_path: Path) -> Path:
+    """The README's build line for the VS Code client, run as written in a copy of editors/vscode: the VSIX."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    found = re.search(r"\*\*VS Code\*\*.*?Build and install it with `([^`]+)`", readme, re.DOTALL)
+    assert found is not None, "the README has no build line for VS Code"
+    shutil.copytree(ROOT / "editors" / "vscode", tmp_path / "editors" / "vscode",
+                    ignore=shutil.ignore_patterns("node_modules", "out", "*.vsix"))  # fmt: skip
+    # npx asks before it fetches a tool, unless told yes (as answering "y" in a terminal does).
+    done = subprocess.run(["sh", "-c", found.group(1)], cwd=tmp_path, capture_output=True, text=True, timeout=900,
+                          env={**os.environ, "npm_config_yes": "true"})  # fmt: skip
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    (vsix,) = (tmp_path / "editors" / "vscode").glob("*.vsix")
+    return vsix
+
+
+def _free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port: int = probe.getsockname()[1]
+        return port
+
+
+def _code_server(code_server: str, tmp_path: Path, vsix: Path, folder: Path) -> tuple[subprocess.Popen[bytes], str]:
+    """code-server with only the VSIX installed, the server command set to this installation, on a free port."""
+    data, extensions = tmp_path / "vscode-data", tmp_path / "vscode-extensions"
+    (data / "User").mkdir(parents=True)
+    settings = {"workbench.startupEditor": "none", "cantools-od.command": [*cli_command(), "lsp"]}
+    (data / "User" / "settings.json").write_text(json.dumps(settings), encoding="utf-8")
+    environment = {**os.environ, "XDG_CONFIG_HOME": str(tmp_path / ".config")}
+    dirs = ["--user-data-dir", str(data), "--extensions-dir", str(extensions)]
+    installed = subprocess.run([code_server, *dirs, "--install-extension", str(vsix)], env=environment,
+                               capture_output=True, text=True, timeout=WAIT)  # fmt: skip
+    assert installed.returncode == 0 and "successfully installed" in installed.stdout, (
+        installed.stdout + installed.stderr
+    )
+    port = _free_port()
+    flags = ["--auth", "none", "--bind-addr", f"127.0.0.1:{port}", "--disable-telemetry", "--disable-update-check",
+             "--disable-workspace-trust"]  # fmt: skip
+    log = (tmp_path / "code-server.log").open("wb")
+    server = subprocess.Popen([code_server, *dirs, *flags, str(folder)], env=environment, stdout=log, stderr=log,
+                              start_new_session=True)  # fmt: skip
+    deadline = time.monotonic() + WAIT
+    while b"HTTP server listening" not in (tmp_path / "code-server.log").read_bytes():
+        assert server.poll() is None and time.monotonic() < deadline, (tmp_path / "code-server.log").read_text()
+        time.sleep(0.2)
+    return server, f"http://127.0.0.1:{port}/?folder={folder}"
+
+
+def test_the_vscode_client_built_as_the_readme_says_shows_lint_findings_in_code_server(tmp_path: Path) -> None:
+    """The README's VS Code build line, its VSIX installed into code-server (VS Code OSS), a real corpus file
+    opened from the explorer in headless Chromium (driven by playwright-core through vscode_probe.js): the
+    Problems panel shows lint's findings, follows a one-line edit, and a mapping entry's hover names the
+    object it maps. Runs when code-server (CODE_SERVER or PATH; it needs the Node it was built for first
+    on PATH), Chromium (CHROMIUM or PATH) and playwright-core (NODE_PATH) are found, e.g. after
+    `npm install --prefix /tmp/vsc code-server playwright-core` and `apt-get install chromium`:
+    `CODE_SERVER=/tmp/vsc/node_modules/.bin/code-server NODE_PATH=/tmp/vsc/node_modules pytest -k vscode`."""
+    tools = _vscode_tools()
+    if isinstance(tools, str):
+        pytest.skip(tools)
+    code_server, chromium = tools
+    device = corpus_file("canopendemo__demoDevice.eds")
+    folder = tmp_path / "work"
+    folder.mkdir()
+    path = folder / device.name
+    shutil.copyfile(device, path)
+    lines = path.read_text(encoding="utf-8").splitlines()
+    line = next(n for n, row in enumerate(lines, 1) if row.startswith("ModificationTime="))
+    mapping = next(n for n, row in enumerate(lines, 1) if re.fullmatch(r"DefaultValue=0x6000\d{4}", row))
+    repaired = tmp_path / "check" / device.name
+    repaired.parent.mkdir()
+    text = "ModificationTime=04:49PM"  # CiA 306's hh:mm, the one change
+    repaired.write_text("\n".join([*lines[: line - 1], text, *lines[line:]]) + "\n", "utf-8")
+    first, after = _lint(path, 0), _lint(repaired, 0)  # warnings and infos only
+    assert after < first, "the edit must change lint's findings"
+    server, url = _code_server(code_server, tmp_path, _readme_build(tmp_path), folder)
+    out = tmp_path / "seen.json"
+    probe = {"PROBE_URL": url, "PROBE_FILE": path.name, "PROBE_LINE": str(line), "PROBE_TEXT": text,
+             "PROBE_HOVER_LINE": str(mapping), "PROBE_HOVER": lines[mapping - 1].split("=")[1], "PROBE_OUT": str(out),
+             "PROBE_SHOT": str(tmp_path / "vscode.png"), "PROBE_CHROMIUM": chromium,
+             "PROBE_PROFILE": str(tmp_path / "chromium")}  # fmt: skip
+    try:
+        done = subprocess.run(["node", str(Path(__file__).parent / "vscode_probe.js")], env={**os.environ, **probe},
+                              capture_output=True, text=True, timeout=WAIT * 4)  # fmt: skip
+    finally:
+        os.killpg(server.pid, signal.SIGTERM)
+        server.wait(timeout=WAIT)
+    assert done.returncode == 0, done.stderr[-2000:]
+    seen = json.loads(out.read_text(encoding="utf-8"))
+    assert seen["language"] == "CANopen EDS/DCF"
+    assert {(n, code) for n, code in seen["first"]} == first and len(seen["first"]) == len(first)
+    assert {(n, code) for n, code in seen["after"]} == after
+    assert "Mapping entry" in seen["hover"] and "6000h" in seen["hover"]

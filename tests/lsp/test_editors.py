@@ -282,7 +282,12 @@ def test_the_helix_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Pat
     assert seen == (first, after)
 
 
-def _vscode_tools() -> tuple[str, str] | str:
+def _code_server_environment(tmp_path: Path) -> dict[str, str]:
+    """code-server writes a default config and its logs under the XDG folders: in tmp_path, not the user's."""
+    return {**os.environ, "XDG_CONFIG_HOME": str(tmp_path / ".config"), "XDG_DATA_HOME": str(tmp_path / ".local")}
+
+
+def _vscode_tools(tmp_path: Path) -> tuple[str, str] | str:
     """code-server and Chromium, or why the VS Code test cannot run here."""
     code_server = shutil.which(os.environ.get("CODE_SERVER", "code-server"))
     chromium = shutil.which(os.environ.get("CHROMIUM", "chromium")) or shutil.which("chromium-browser")
@@ -290,7 +295,8 @@ def _vscode_tools() -> tuple[str, str] | str:
         return "code-server (VS Code OSS in a browser) is not installed; set CODE_SERVER or put it on PATH"
     if chromium is None:
         return "Chromium is not installed; set CHROMIUM or put chromium on PATH"
-    runs = subprocess.run([code_server, "--version"], capture_output=True, text=True, timeout=WAIT)
+    runs = subprocess.run([code_server, "--version"], capture_output=True, text=True, timeout=WAIT,
+                          env=_code_server_environment(tmp_path))  # fmt: skip
     if runs.returncode != 0:  # e.g. it needs a newer Node than the one first on PATH
         return "code-server does not run here: " + (runs.stderr.strip() or runs.stdout.strip()).split("\n")[0]
     if shutil.which("npx") is None:
@@ -329,7 +335,7 @@ def _code_server(code_server: str, tmp_path: Path, vsix: Path, folder: Path) -> 
     (data / "User").mkdir(parents=True)
     settings = {"workbench.startupEditor": "none", "cantools-od.command": [*cli_command(), "lsp"]}
     (data / "User" / "settings.json").write_text(json.dumps(settings), encoding="utf-8")
-    environment = {**os.environ, "XDG_CONFIG_HOME": str(tmp_path / ".config")}
+    environment = _code_server_environment(tmp_path)
     dirs = ["--user-data-dir", str(data), "--extensions-dir", str(extensions)]
     installed = subprocess.run([code_server, *dirs, "--install-extension", str(vsix)], env=environment,
                                capture_output=True, text=True, timeout=WAIT)  # fmt: skip
@@ -357,7 +363,7 @@ def test_the_vscode_client_built_as_the_readme_says_shows_lint_findings_in_code_
     on PATH), Chromium (CHROMIUM or PATH) and playwright-core (NODE_PATH) are found, e.g. after
     `npm install --prefix /tmp/vsc code-server playwright-core` and `apt-get install chromium`:
     `CODE_SERVER=/tmp/vsc/node_modules/.bin/code-server NODE_PATH=/tmp/vsc/node_modules pytest -k vscode`."""
-    tools = _vscode_tools()
+    tools = _vscode_tools(tmp_path)
     if isinstance(tools, str):
         pytest.skip(tools)
     code_server, chromium = tools

@@ -345,14 +345,24 @@ def _code_server(code_server: str, tmp_path: Path, vsix: Path, folder: Path) -> 
     port = _free_port()
     flags = ["--auth", "none", "--bind-addr", f"127.0.0.1:{port}", "--disable-telemetry", "--disable-update-check",
              "--disable-workspace-trust"]  # fmt: skip
-    log = (tmp_path / "code-server.log").open("wb")
-    server = subprocess.Popen([code_server, *dirs, *flags, str(folder)], env=environment, stdout=log, stderr=log,
-                              start_new_session=True)  # fmt: skip
+    log = tmp_path / "code-server.log"
+    with log.open("wb") as output:
+        server = subprocess.Popen([code_server, *dirs, *flags, str(folder)], env=environment, stdout=output,
+                                  stderr=output, start_new_session=True)  # fmt: skip
     deadline = time.monotonic() + WAIT
-    while b"HTTP server listening" not in (tmp_path / "code-server.log").read_bytes():
-        assert server.poll() is None and time.monotonic() < deadline, (tmp_path / "code-server.log").read_text()
+    while b"HTTP server listening" not in log.read_bytes():
+        if server.poll() is not None or time.monotonic() > deadline:
+            _stop(server)
+            pytest.fail("code-server did not start: " + log.read_text(errors="replace")[-2000:])
         time.sleep(0.2)
     return server, f"http://127.0.0.1:{port}/?folder={folder}"
+
+
+def _stop(server: subprocess.Popen[bytes]) -> None:
+    """code-server and what it started (its extension hosts, the language server)."""
+    if server.poll() is None:
+        os.killpg(server.pid, signal.SIGTERM)
+    server.wait(timeout=WAIT)
 
 
 def test_the_vscode_client_built_as_the_readme_says_shows_lint_findings_in_code_server(tmp_path: Path) -> None:
@@ -391,8 +401,7 @@ def test_the_vscode_client_built_as_the_readme_says_shows_lint_findings_in_code_
         done = subprocess.run(["node", str(Path(__file__).parent / "vscode_probe.js")], env={**os.environ, **probe},
                               capture_output=True, text=True, timeout=WAIT * 4)  # fmt: skip
     finally:
-        os.killpg(server.pid, signal.SIGTERM)
-        server.wait(timeout=WAIT)
+        _stop(server)
     assert out.is_file(), done.stderr[-2000:]
     seen = json.loads(out.read_text(encoding="utf-8"))
     assert seen["language"] == "CANopen EDS/DCF"

@@ -314,12 +314,40 @@ def _readme_build(tmp_path: Path) -> Path:
     assert found is not None, "the README has no build line for VS Code"
     shutil.copytree(ROOT / "editors" / "vscode", tmp_path / "editors" / "vscode",
                     ignore=shutil.ignore_patterns("node_modules", "out", "*.vsix"))  # fmt: skip
-    # npx asks before it fetches a tool, unless told yes (as answering "y" in a terminal does).
-    done = subprocess.run(["sh", "-c", found.group(1)], cwd=tmp_path, capture_output=True, text=True, timeout=900,
-                          env={**os.environ, "npm_config_yes": "true"})  # fmt: skip
-    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    # On a terminal, as a user types it, pressing Enter at every question (vsce's "[y/N]" then means no);
+    # npx may fetch vsce without asking (this machine's npm config may say no to that question).
+    status, output = _typed(["sh", "-c", found.group(1)], tmp_path, {**os.environ, "npm_config_yes": "true"})
+    assert status == 0, output[-3000:]
     (vsix,) = (tmp_path / "editors" / "vscode").glob("*.vsix")
     return vsix
+
+
+def _typed(command: list[str], cwd: Path, environment: dict[str, str]) -> tuple[int, str]:
+    """Run `command` on a pseudo-terminal, answering each question ("[y/N]", "(y)") with Enter alone."""
+    main, side = pty.openpty()
+    process = subprocess.Popen(command, cwd=cwd, env=environment, stdin=side, stdout=side, stderr=side,
+                               start_new_session=True)  # fmt: skip
+    os.close(side)
+    output, answered, deadline = b"", 0, time.monotonic() + 900
+    try:
+        while time.monotonic() < deadline:
+            if select.select([main], [], [], 0.2)[0]:
+                try:
+                    output += os.read(main, 65536)
+                except OSError:  # the terminal closed: the command ended
+                    break
+                questions = len(re.findall(rb"\[y/N\]|\(y\)", re.sub(rb"\x1b\[[0-9;]*[A-Za-z]", b"", output)))
+                if questions > answered:
+                    os.write(main, b"\r")
+                    answered = questions
+            elif process.poll() is not None:
+                break
+    finally:
+        if process.poll() is None:
+            process.kill()
+        process.wait()
+        os.close(main)
+    return process.returncode, output.decode("utf-8", "replace")
 
 
 def _free_port() -> int:

@@ -3,7 +3,8 @@
 Each test makes an example EDS with two errors, opens it in the editor configured only by the README's
 snippet, waits for the diagnostics the editor shows, then repairs one line in the editor's buffer and
 waits for the diagnostics to follow. What the editor shows must be what `lint` reports for the same
-texts. A test skips, saying why, when its editor is not installed."""
+texts. The VS Code one builds the client by the README's line and opens a corpus file in code-server
+driven through headless Chromium. A test skips, saying why, when its editor is not installed."""
 
 from __future__ import annotations
 

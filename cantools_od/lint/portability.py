@@ -472,6 +472,11 @@ def comment_characters(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
     found: list[tuple[str, Variable, str]] = []
     for obj, subindex, var in checked_vars(ctx):
+        for text in (var.name, var.denotation, var.default, var.parameter_value):
+            if isinstance(text, str) and ("#" in text or ";" in text):
+                break
+        else:
+            continue  # the common case, decided at once
         for key, field in _TEXT_FIELDS:
             value = getattr(var, field)
             if not isinstance(value, str) or ("#" not in value and ";" not in value):

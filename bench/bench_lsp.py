@@ -8,8 +8,10 @@ makes one-line edits (DefaultValue lines of objects spread over the file rewritt
 from the didChange notification to the diagnostics: the exact ones (published with the edit's
 version: the edited object read again, the rest of the device kept, all of it linted; see
 cantools_od/lsp/incremental.py) and, for an edit that path does not cover, the quick ones first
-(published without a version, from a check of the edited object alone). Both times include the
-server's debounce (DEBOUNCE in cantools_od/lsp/server.py) and the protocol. Prints the open time
+(published without a version, from a check of the edited object alone). Each edit follows a pause
+(--pause, 0.5 s: a person between two one-line edits), so the server checks it at once; edits closer
+together than DEBOUNCE (cantools_od/lsp/server.py) wait for the burst to pause. The times include the
+protocol. Prints the open time
 and the median and worst edit times in ms, the load average, and the CPU time one re-check takes
 in this process (incremental, full and quick), which depends less on what else the machine runs.
 """
@@ -75,7 +77,7 @@ def _edited(lines: list[str], line: int) -> str:
     return "DefaultValue=1" if lines[line].strip() != "DefaultValue=1" else "DefaultValue=2"
 
 
-async def run(path: Path, edits: int) -> dict[str, list[float]]:
+async def run(path: Path, edits: int, pause: float) -> dict[str, list[float]]:
     client = Client()
     server = Path(sys.executable).parent / "cantools-od"
     await client.start_io(str(server), "lsp")
@@ -94,6 +96,7 @@ async def run(path: Path, edits: int) -> dict[str, list[float]]:
             range=types.Range(types.Position(line, 0), types.Position(line, len(lines[line]))), text=new
         )
         lines[line] = new
+        await asyncio.sleep(pause)
         client.sent = version
         sent = time.perf_counter()
         client.text_document_did_change(
@@ -150,10 +153,11 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("file", nargs="?", type=Path)
     parser.add_argument("--edits", type=int, default=12)
+    parser.add_argument("--pause", type=float, default=0.5, help="seconds of quiet before each edit")
     args = parser.parse_args()
     path = args.file or _largest()
     load = os.getloadavg()[0]
-    result = asyncio.run(run(path, args.edits))
+    result = asyncio.run(run(path, args.edits, args.pause))
     spent = cpu(path, args.edits)
     size = path.stat().st_size / 1000
     print(f"{path.name} ({size:.0f} kB), {args.edits} one-line edits, load average {load:.1f} before, "

@@ -37,6 +37,7 @@ these access types and warns.""",
         ex.NODE_5 + "[2F50]\nParameterName=Program\nObjectType=0x7\nDataType=0x000F\nAccessType=wo\nPDOMapping=0\n"
         "DownloadFile=firmware.bin"
     ),
+    per_object=True,
 )
 def file_access(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
@@ -69,6 +70,7 @@ DataType 0x000F); other entries have a value of their data type.""",
         ex.NODE_5 + "[2000]\nParameterName=Speed log\nObjectType=0x7\nDataType=0x000F\nAccessType=ro\nPDOMapping=0\n"
         "UploadFile=speed.bin"
     ),
+    per_object=True,
 )
 def file_domain(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
@@ -90,6 +92,7 @@ describe one configured node and belong in a DCF (CiA 306 §5). In an EDS, tools
 or take them for the device's defaults.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nParameterValue=100",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=100\nPDOMapping=0",
+    per_object=True,
 )
 def dcf_keys(ctx: Context) -> Iterator[Finding]:
     device = ctx.device

@@ -65,6 +65,7 @@ ARRAY, RECORD and DEFSTRUCT without CompactSubObj. A missing key equals an empty
 crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    per_object=True,
 )
 def missing_keys(ctx: Context) -> Iterator[Finding]:
     xml = ctx.device.file_format != "eds"
@@ -98,6 +99,7 @@ as if they were absent.""",
     "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n" + _PAIR_SUBS,
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     fix_safety="No automatic fix: delete the key.",
+    per_object=True,
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
@@ -136,6 +138,7 @@ SubNumber counts the sub-objects an ARRAY, RECORD or DEFSTRUCT implements, sub-i
 the wrong number of entries or reject the file.""",
     "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n" + _PAIR_SUBS,
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
+    per_object=True,
 )
 def sub_number(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -172,6 +175,7 @@ sub-objects, must be 1..254, and excludes both a non-zero SubNumber and `[<index
 sections, which would describe the same sub-objects twice.""",
     "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=4\nSubNumber=5",
     fixed="[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=4",
+    per_object=True,
 )
 def compact_misuse(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -210,6 +214,7 @@ reserved bits switch on lely-internal behaviour.""",
         "[2000]\nParameterName=Setpoint\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\nObjFlags=0x0"
     ),
+    per_object=True,
 )
 def obj_flags(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
@@ -237,6 +242,7 @@ with another type, they reject the object or read the wrong count.""",
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
+    per_object=True,
 )
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -280,6 +286,7 @@ objects whose sub0 is writable, where sub0 counts the valid entries.""",
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\nParameterName=Second\nObjectType=0x7\n"
         "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    per_object=True,
 )
 def sub0_value(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -323,6 +330,7 @@ SubNumber and is never described in an EDS.""",
         "ObjectType=0x7\nDataType=0x0007\nAccessType=ro\nDefaultValue=0\nPDOMapping=0"
     ),
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
+    per_object=True,
 )
 def sub_ff(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -352,6 +360,7 @@ Tools and generated code store an ARRAY as one C array.""",
         "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0\n\n[2000sub2]\nParameterName=Gain 2\n"
         "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    per_object=True,
 )
 def array_types(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -391,6 +400,7 @@ custom types without their definition cannot be read: python-canopen falls back 
 canmatrix and lely fail.""",
     "[2000]\nParameterName=Gain\nDataType=0x0040\nAccessType=rw",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    per_object=True,
 )
 def undefined_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
@@ -416,6 +426,7 @@ else, and nothing else belongs there (CiA 301, object dictionary index areas). I
     "; also: DIA005 (every DEFTYPE)\n[2000]\nParameterName=My type\nObjectType=0x5\nDataType=0x0007\nAccessType=ro",
     fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: move the definition below 1000h, or use the basic type itself as here.",
+    per_object=True,
 )
 def type_area(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):

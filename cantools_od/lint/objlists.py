@@ -40,6 +40,14 @@ def listings(device: Device) -> Iterator[tuple[str, ObjectList, int, int]]:
                 yield name, found, position, index
 
 
+def _listings(ctx: Context) -> list[tuple[str, ObjectList, int, int]]:
+    """`listings` of the device under check, sorted once for all the rules that ask."""
+    found: list[tuple[str, ObjectList, int, int]] | None = ctx.memo.get("listings")
+    if found is None:
+        found = ctx.memo["listings"] = list(listings(ctx.device))
+    return found
+
+
 def listed_indices(device: Device) -> set[int]:
     """Every listed index, also those a repeated position hides (EDS015 renumbers them)."""
     listed = {index for _, _, _, index in listings(device)}
@@ -83,7 +91,7 @@ reported by EDS011.""",
     ),
 )
 def listed_absent(ctx: Context) -> Iterator[Finding]:
-    for name, found, position, index in listings(ctx.device):
+    for name, found, position, index in _listings(ctx):
         if index not in ctx.device.objects and index not in MANDATORY_INDICES:  # those: EDS011
             fix = Fix(f"remove 0x{index:04X} from [{name}]", False, _fix_unlist(name, index))
             message = f"[{name}] {position}=0x{index:04X}: no [{index:04X}] section"
@@ -205,7 +213,7 @@ Fix (unsafe, shown only): move the entry; it renumbers both lists.""",
     ),
 )
 def mandatory_list(ctx: Context) -> Iterator[Finding]:
-    for name, found, position, index in listings(ctx.device):
+    for name, found, position, index in _listings(ctx):
         if (name == MANDATORY) != (index in MANDATORY_INDICES):
             target = home(index)
             if target is None:
@@ -237,7 +245,7 @@ the object is misplaced or its index is.""",
     ),
 )
 def area(ctx: Context) -> Iterator[Finding]:
-    entries = list(listings(ctx.device))
+    entries = _listings(ctx)
     for name, found, position, index in entries:
         target = home(index)
         if name == MANDATORY or target is None or target == MANDATORY:
@@ -274,7 +282,7 @@ object lists. lely dcfchk rejects them there ("data type objects are not support
     "AccessType=ro\n\n[OptionalObjects]\nSupportedObjects=0",
 )
 def data_type_listed(ctx: Context) -> Iterator[Finding]:
-    for name, found, position, index in listings(ctx.device):
+    for name, found, position, index in _listings(ctx):
         if index < DATA_TYPE_AREA.stop:
             message = f"[{name}] {position}=0x{index:04X}: data types are not listed"
             yield ctx.report("EDS018", message, _entry_at(ctx, found, position))
@@ -299,7 +307,7 @@ SupportedObjects and leaves tools unsure which list is meant.""",
 )
 def listed_twice(ctx: Context) -> Iterator[Finding]:
     seen: dict[int, tuple[str, int]] = {}
-    for name, found, position, index in sorted(listings(ctx.device), key=lambda e: e[1] is not _home_list(ctx, e)):
+    for name, found, position, index in sorted(_listings(ctx), key=lambda e: e[1] is not _home_list(ctx, e)):
         first = seen.setdefault(index, (name, position))
         if first != (name, position):
             fix = Fix(f"remove this entry of 0x{index:04X}", True, _fix_duplicate(index))

@@ -34,6 +34,8 @@ W, INFO = Severity.WARNING, Severity.INFO
 
 _EXTENSION_KEYS = {keys.normalize(key) for key in EXTENSION_KEYS}
 _STRING_FIELDS = (("ParameterName", "name"), ("Denotation", "denotation"))
+_EXTENSIONS = (";StorageLocation", ";TPDODetectCos")
+_TEXT_FIELDS = (*_STRING_FIELDS, ("DefaultValue", "default"), ("ParameterValue", "parameter_value"))
 
 
 @rule(
@@ -70,6 +72,7 @@ value is read with its quotes everywhere but in lely.""",
         "[1008]\nParameterName=Device name\nObjectType=0x7\nDataType=0x0009\nAccessType=const\n"
         "DefaultValue=Drive\nPDOMapping=0"
     ),
+    per_object=True,
 )
 def quoted_strings(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -128,6 +131,7 @@ mapping objects). python-canopen turns such a RECORD into an empty record and ig
 [xxxxValue] section, so PDO mappings are lost; CANopenEditor expands it.""",
     "[2000]\nParameterName=Pair\nObjectType=0x9\nDataType=0x0007\nAccessType=rw\nCompactSubObj=2",
     fixed="[2000]\nParameterName=Pair\nObjectType=0x8\nDataType=0x0007\nAccessType=rw\nCompactSubObj=2",
+    per_object=True,
 )
 def compact_record(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -148,6 +152,7 @@ typed by them become unreadable there.""",
     "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: type the entries by the basic types and delete the definition.",
+    per_object=True,
 )
 def type_definitions(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -175,8 +180,7 @@ CANopenNode's code generators. Reported once per file.""",
 def extension_comments(ctx: Context) -> Iterator[Finding]:
     found: list[Section] = []
     for _, _, var in checked_vars(ctx):
-        lines = (line for block in var.comments.values() for line in block)
-        if any(line.startswith((";StorageLocation", ";TPDODetectCos")) for line in lines):
+        if var.comments and any(line.startswith(_EXTENSIONS) for block in var.comments.values() for line in block):
             found.append(var)
     if found:
         message = f"{len(found)} section{'s' if len(found) != 1 else ''} with ;StorageLocation/;TPDODetectCos comments"
@@ -200,6 +204,7 @@ mangled names. VISIBLE_STRING values are checked by EDS038.""",
         "[2000]\nParameterName=Motor rated current uA\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
         "DefaultValue=0\nPDOMapping=0"
     ),
+    per_object=True,
 )
 def non_ascii(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -235,6 +240,7 @@ not support it. Undefined custom types are reported by EDS080.""",
     "[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0040\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: type the entry by the basic type the definition stands for.",
+    per_object=True,
 )
 def custom_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
@@ -273,6 +279,7 @@ generators (and CANopenEditor, #55) drop one of them.""",
         "ParameterName=Value 2\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0"
     ),
+    per_object=True,
 )
 def duplicate_names(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -300,6 +307,7 @@ they are not CiA 306 keys, and lely dcfchk rejects them as invalid entries.""",
         "[2000]\nParameterName=Speed (rpm)\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
         "DefaultValue=0\nPDOMapping=0"
     ),
+    per_object=True,
 )
 def extension_keys(ctx: Context) -> Iterator[Finding]:
     for owner, subindex, var in checked_vars(ctx):
@@ -357,6 +365,7 @@ CiA 306 does not specify how TIME_OF_DAY and TIME_DIFFERENCE values are written.
 36543200000) and CANopenNode expects a byte array.""",
     "[2000]\nParameterName=Start\nDataType=0x000C\nAccessType=rw\nDefaultValue=365 43200000",
     fixed="[2000]\nParameterName=Start\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    per_object=True,
 )
 def time_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -385,6 +394,7 @@ and CANopenNode drop or reject such limits.""",
         "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
         "DefaultValue=$NODEID+0x580\nPDOMapping=0\nLowLimit=0x581"
     ),
+    per_object=True,
 )
 def nodeid_limits(ctx: Context) -> Iterator[Finding]:
     for owner, subindex, var in checked_vars(ctx):
@@ -403,6 +413,7 @@ def nodeid_limits(ctx: Context) -> Iterator[Finding]:
 python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key out.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nPDOMapping=",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    per_object=True,
 )
 def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
     for owner, subindex, var in checked_vars(ctx):
@@ -461,15 +472,20 @@ def comment_characters(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
     found: list[tuple[str, Variable, str]] = []
     for obj, subindex, var in checked_vars(ctx):
-        dtype = device.entry_type(var, obj)
-        fields = [*_STRING_FIELDS]
-        if dtype is not None and dtype.kind is ValueKind.STRING:
-            fields += [("DefaultValue", "default"), ("ParameterValue", "parameter_value")]
-        found.extend(
-            (f"{where(obj, subindex)} {key}", var, key)
-            for key, field in fields
-            if isinstance(getattr(var, field), str) and ("#" in getattr(var, field) or ";" in getattr(var, field))
-        )
+        for text in (var.name, var.denotation, var.default, var.parameter_value):
+            if isinstance(text, str) and ("#" in text or ";" in text):
+                break
+        else:
+            continue  # the common case, decided at once
+        for key, field in _TEXT_FIELDS:
+            value = getattr(var, field)
+            if not isinstance(value, str) or ("#" not in value and ";" not in value):
+                continue
+            if field not in ("name", "denotation"):  # a value: text only when the entry is a string
+                dtype = device.entry_type(var, obj)
+                if dtype is None or dtype.kind is not ValueKind.STRING:
+                    continue
+            found.append((f"{where(obj, subindex)} {key}", var, key))
     if found:
         first = ", ".join(item[0] for item in found[:3]) + (", ..." if len(found) > 3 else "")
         message = f"{_count(found, 'text value', 'text values')} with '#' or ';' ({first}); lely cuts them there"
@@ -492,6 +508,7 @@ python-canopen does not look up; unsafe (`--unsafe-fixes`) for one it does (it t
 it did not read before).""",
     ("[DeviceInfo]\nNrOfRxPDO=0"),
     fixed=("[DeviceInfo]\nNrOfRXPDO=0"),
+    per_object=True,
 )
 def key_spelling(ctx: Context) -> Iterator[Finding]:
     for spelling in spellings(ctx):

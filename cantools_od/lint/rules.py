@@ -117,6 +117,10 @@ class Rule:
     fixed: str = ""  # the example corrected: it does not trigger the rule
     fix_safety: str = ""  # what `--fix` does about it, and whether that is safe
     refs: str = ""  # the standard's sections, beyond the family's
+    per_object: bool = False
+    """The rule's findings on an object's lines depend on that object alone (with the data-type definitions,
+    the sections that are no object's and the options), and its other findings on no object: after an edit
+    of one object, its findings elsewhere stand (runner.py reuses them) and a check of that object finds the rest."""
 
 
 RULES: dict[str, Rule] = {}
@@ -132,16 +136,17 @@ def rule(
     fixed: str = "",
     fix_safety: str = "",
     refs: str = "",
+    per_object: bool = False,
 ) -> Callable[[Check], Check]:
     """Register a check function under a code. The family is the module's last name part.
 
     `description` says why the rule exists; `example` is a fragment of an EDS that triggers it,
-    `fixed` the same fragment corrected (the documentation runs both)."""
+    `fixed` the same fragment corrected (the documentation runs both). `per_object`: see `Rule.per_object`."""
 
     def register(check: Check) -> Check:
         family = check.__module__.rsplit(".", 1)[-1]
         _add(Rule(code, severity, summary, description.strip(), example.strip(), family, check, fixed.strip(),
-                  fix_safety.strip(), refs.strip()))  # fmt: skip
+                  fix_safety.strip(), refs.strip(), per_object))  # fmt: skip
         return check
 
     return register

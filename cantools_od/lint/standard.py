@@ -74,6 +74,14 @@ def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
             yield obj, found
 
 
+def _standard(ctx: Context) -> list[tuple[Object, Definition]]:
+    """`standard_objects` of the device under check, found once for all the rules that ask."""
+    found: list[tuple[Object, Definition]] | None = ctx.memo.get("standard_objects")
+    if found is None:
+        found = ctx.memo["standard_objects"] = list(standard_objects(ctx.device))
+    return found
+
+
 def same_layout(obj: Object, found: Definition) -> bool:
     """The object has sub-indices where the standard's has them (ARRAY and RECORD alike), or none."""
     return found.accepts(obj.kind) or obj.has_subs == (found.kind in (ObjectKind.ARRAY, ObjectKind.RECORD))
@@ -134,7 +142,7 @@ has a RECORD (or the reverse) lays out the same entries: that is STD002.""",
     fix_safety="No automatic fix: the object must be described again.",
 )
 def object_type(ctx: Context) -> Iterator[Finding]:
-    for obj, found in standard_objects(ctx.device):
+    for obj, found in _standard(ctx):
         if same_layout(obj, found):
             continue
         message = (
@@ -161,7 +169,7 @@ Warning: nothing is read wrong; the description differs from the standard's.""",
     fix_safety="No automatic fix (changing ObjectType changes generated code).",
 )
 def array_or_record(ctx: Context) -> Iterator[Finding]:
-    for obj, found in standard_objects(ctx.device):
+    for obj, found in _standard(ctx):
         wanted = (ObjectKind.ARRAY, ObjectKind.RECORD)
         if obj.kind is found.kind or obj.kind not in wanted or found.kind not in wanted:
             continue
@@ -186,7 +194,7 @@ Fix (unsafe, shown only): set DataType to the standard's; the values must then b
     fixed="[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro",
 )
 def data_type(ctx: Context) -> Iterator[Finding]:
-    for obj, found in standard_objects(ctx.device):
+    for obj, found in _standard(ctx):
         for subindex, var, entry in _entries(obj, found):
             written = ctx.device.entry_type(var, obj)
             if entry.data_type is None or var.data_type is None or written is None:
@@ -252,7 +260,7 @@ Warning: communication works, but configuration steps fail or are skipped.""",
     fix_safety="No automatic fix (the device's behaviour decides which side is wrong).",
 )
 def access_type(ctx: Context) -> Iterator[Finding]:
-    for obj, found in standard_objects(ctx.device):
+    for obj, found in _standard(ctx):
         for subindex, var, entry in _all_entries(obj, found):
             if entry.access is None or var.access is None or var.access in entry.access:
                 continue
@@ -289,7 +297,7 @@ Warning: nothing is read wrong; a configuration step can fail.""",
     fix_safety="No automatic fix.",
 )
 def mapping(ctx: Context) -> Iterator[Finding]:
-    for obj, found in standard_objects(ctx.device):
+    for obj, found in _standard(ctx):
         for subindex, var, entry in _all_entries(obj, found):
             if entry.mapping is Mapping.NO and var.pdo_mapping:
                 section, key = _keys_of(ctx, obj, var, "PDOMapping")
@@ -327,7 +335,7 @@ Warning: the drive may still be run by SDO; a standard PDO set-up fails.""",
     fix_safety="No automatic fix: making an entry mappable changes what a master may map.",
 )
 def default_mapping(ctx: Context) -> Iterator[Finding]:
-    for obj, found in standard_objects(ctx.device):
+    for obj, found in _standard(ctx):
         for subindex, var, entry in _entries(obj, found):
             kind = var.pdo_mapping_kind()
             wanted = _direction(entry)
@@ -357,7 +365,7 @@ Warning: the value is one the standard rules out; which side is wrong depends on
     fix_safety="No automatic fix.",
 )
 def value_range(ctx: Context) -> Iterator[Finding]:
-    for obj, found in standard_objects(ctx.device):
+    for obj, found in _standard(ctx):
         for subindex, var, entry in _all_entries(obj, found):
             if entry.values is None or (isinstance(var, SubObject) and var.implicit):
                 continue

@@ -92,6 +92,7 @@ Reserved compatibility keys of [DeviceInfo] (ProductVersion, ...) and the extens
 python-canopen reads (Factor, Unit, Description, StorageLocation) are not reported here.""",
     "[DeviceInfo]\nBaudrate_100=1",
     fixed=("[DeviceInfo]\nBaudRate_125=1"),
+    per_object=True,
 )
 def unknown_keys(ctx: Context) -> Iterator[Finding]:
     for name, section, known in _keyed_sections(ctx.device):
@@ -149,6 +150,7 @@ whose shorter keys let a too long name fit on one line.""",
     "[2000Name]\nNrOfEntries=1\n1=" + "Input " * 41,
     fixed="[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=1\n\n"
     "[2000Name]\nNrOfEntries=1\n1=Input 1",
+    per_object=True,
 )
 def long_names(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -345,6 +347,7 @@ python-canopen does not look up (an object list's count); unsafe (`--unsafe-fixe
 does, since it then reads a value it did not read before.""",
     "[MandatoryObjects]\nSupported Objects=3\n1=0x1000\n2=0x1001\n3=0x1018",
     fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
+    per_object=True,
 )
 def unfound_spelling(ctx: Context) -> Iterator[Finding]:
     for spelling in spellings(ctx):

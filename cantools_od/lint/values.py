@@ -147,6 +147,7 @@ bits (a day for TIME_OF_DAY). `$NODEID` values are checked for every node-ID 1..
 node-ID given). Tools truncate such values or reject the file.""",
     "[2000]\nParameterName=Count\nDataType=0x0005\nAccessType=rw\nDefaultValue=300",
     fixed="[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=300\nPDOMapping=0",
+    per_object=True,
 )
 def type_range(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -191,6 +192,7 @@ LowLimit and HighLimit bound numeric values (integers, BOOLEAN, REAL); strings, 
 DOMAIN and the TIME types have no order a limit could use (CiA 306, LowLimit/HighLimit).""",
     "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nLowLimit=0",
     fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=x\nPDOMapping=0",
+    per_object=True,
 )
 def non_numeric_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -236,6 +238,7 @@ Signed limits are compared as the numbers they denote (two's-complement hex incl
         "[2000]\nParameterName=Offset\nObjectType=0x7\nDataType=0x0003\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\nLowLimit=-100\nHighLimit=100"
     ),
+    per_object=True,
 )
 def limits_order(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -287,6 +290,7 @@ value it would refuse to be written. `$NODEID` defaults are checked for node-IDs
         "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=3000\n"
         "PDOMapping=0\nHighLimit=3000"
     ),
+    per_object=True,
 )
 def default_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -313,6 +317,7 @@ LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boo
         ex.NODE_5 + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\nHighLimit=3000\nParameterValue=3000"
     ),
+    per_object=True,
 )
 def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -336,6 +341,7 @@ the text stays as it is, which is rarely what was meant: usually the DataType is
         "[2000]\nParameterName=COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
         "DefaultValue=$NODEID+0x180\nPDOMapping=0"
     ),
+    per_object=True,
 )
 def nodeid_text(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -358,6 +364,7 @@ differently. Use UNICODE_STRING or OCTET_STRING for other text.""",
         "[1008]\nParameterName=Device name\nObjectType=0x7\nDataType=0x0009\nAccessType=const\n"
         "DefaultValue=Motor 5 deg\nPDOMapping=0"
     ),
+    per_object=True,
 )
 def visible_string(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -381,6 +388,7 @@ checked; as a limit it disables the check, as a default it is rarely intended. P
 `nan`/`inf` text differently or not at all.""",
     "[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\nDefaultValue=nan",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1.5\nPDOMapping=0",
+    per_object=True,
 )
 def real_finite(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):

@@ -7,7 +7,8 @@ from pathlib import Path
 from urllib.parse import unquote, urlparse
 
 from ..eds.decode import CP1252, decode_as, encode
-from ..lint import Finding, LintOptions, Selection, lint, load_selection
+from ..lint import Finding, LintOptions, Selection, load_selection
+from ..lint.runner import Linted, linted
 from ..model import Device
 
 _BOM = b"\xef\xbb\xbf"
@@ -55,6 +56,8 @@ class Analysis:
     refusal: tuple[str, str] | None = None
     """(code, one-line reason) when the text is no device description at all."""
     config_error: str | None = None
+    linted: Linted | None = None
+    """What lint kept of its check for the next one (an edit of one object re-checks that object alone)."""
 
 
 def source_name(uri: str) -> str:
@@ -89,4 +92,5 @@ def analyse(uri: str, text: str, version: int | None, encoding: Encoding, option
         return Analysis(version, text, None, refusal=(error.code, str(error)))
     except RecursionError:
         return Analysis(version, text, None, refusal=("EDS000", "not readable: nested too deeply"))
-    return Analysis(version, text, device, lint(device, options, selection))
+    checked = linted(device, options, selection)
+    return Analysis(version, text, device, checked.findings, linted=checked)

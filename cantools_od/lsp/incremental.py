@@ -23,7 +23,8 @@ from pydantic import BaseModel
 
 from ..eds import ini
 from ..eds.dialect import _lely, _other
-from ..lint import LintOptions, lint
+from ..lint import LintOptions
+from ..lint.runner import Edit, linted
 from ..model import Device, Diagnostic, Object, Origin
 from ..model.cia301.objects import COMM_BASE, DATA_TYPE_AREA, MAP_BASE, PDO_SPAN
 from ..sniff import NotADeviceDescription
@@ -46,15 +47,17 @@ def reanalyse(old: Analysis, uri: str, text: str, version: int | None, encoding:
         selection = selection_for(uri)
     except ValueError:
         return None  # the full check says so
-    device = reread(old, text, uri, encoding)
-    if device is None:
+    found = reread(old, text, uri, encoding)
+    if found is None:
         return None
-    return Analysis(version, text, device, lint(device, options, selection))
+    device, edit = found
+    checked = linted(device, options, selection, (old.linted, edit) if old.linted is not None else None)
+    return Analysis(version, text, device, checked.findings, linted=checked)
 
 
-def reread(old: Analysis, text: str, uri: str, encoding: Encoding) -> Device | None:
-    """The device `text` describes, `old`'s device read again where the edit can change it; None when
-    the edit is not one this covers (read the whole text)."""
+def reread(old: Analysis, text: str, uri: str, encoding: Encoding) -> tuple[Device, Edit] | None:
+    """The device `text` describes, `old`'s device read again where the edit can change it, and the edit;
+    None when the edit is not one this covers (read the whole text)."""
     device = old.device
     found = object_edit(old, text)
     if device is None or found is None or not _plain_file(device, encoding):
@@ -73,7 +76,8 @@ def reread(old: Analysis, text: str, uri: str, encoding: Encoding) -> Device | N
         return None
     if any(d.code == "EDS103" or _whole_file(d) for d in reduced.diagnostics):  # the object's sub-object kept as text
         return None
-    return _spliced(device, reduced, index, (before.spans(index), after.spans(index)), (start, delta), data)
+    spans = (before.spans(index), after.spans(index))
+    return _spliced(device, reduced, index, spans, (start, delta), data), Edit(index, *spans, start, delta)
 
 
 def _plain_file(device: Device, encoding: Encoding) -> bool:

@@ -16,11 +16,12 @@ from __future__ import annotations
 
 import re
 from bisect import bisect_right
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cache
 
 from ..lint import RULES, Finding, LintOptions, lint
 from ..lint.codes import load as load_families
+from ..lint.runner import moved
 from ..model.cia301.objects import COMM_BASE, DEVICE_TYPE, MAP_BASE, PDO_SPAN
 from ..sniff import NotADeviceDescription
 from .document import Analysis, Encoding, read, selection_for
@@ -150,9 +151,9 @@ def quick_findings(
         return None
     old_spans, kept = before.spans(index), after.spans(index)
     whole = _whole_file_codes()
-    moved = [_moved(f, start, delta) for f in old.findings if f.location.line not in old_spans or f.code in whole]
+    others = [moved(f, start, delta) for f in old.findings if f.location.line not in old_spans or f.code in whole]
     ours = [f for f in found if f.location.line in kept and f.code not in whole]
-    return sorted(set(moved + ours), key=_order)
+    return sorted(set(others + ours), key=_order)
 
 
 def plain_lines(text: str) -> bool:
@@ -249,13 +250,6 @@ def _blanked(body: str, skip: int, entries: bool, comments: bool) -> str:
         keep = entries if number <= last or not bare or bare[0] not in ";#" else comments
         out.append(line if keep else line[len(line.rstrip("\r\n")) :])
     return "".join(out)
-
-
-def _moved(finding: Finding, start: int, delta: int) -> Finding:
-    where = finding.location
-    if delta == 0 or where.line <= start:
-        return finding
-    return replace(finding, location=where.model_copy(update={"line": where.line + delta}))
 
 
 def _order(finding: Finding) -> tuple[str, int, int, str, str]:

@@ -22,7 +22,8 @@ from .positions import Lines
 from .quick import quick_findings
 
 DEBOUNCE = 0.1
-"""Seconds of quiet after an edit before the document is read and linted again."""
+"""Seconds of quiet after an edit before the document is read and linted again, when the edit follows another
+within that time (a burst: typing, a paste in steps, an undo); an edit after a quiet spell is checked at once."""
 
 
 @dataclass
@@ -33,6 +34,11 @@ class Open:
     analysis: Analysis | None = None
     lines: Lines | None = None
     pending: asyncio.TimerHandle | None = None
+    changed: float = float("-inf")
+    """When (the event loop's clock) the text last changed."""
+    latest: Analysis | None = None
+    """The worker's newest analysis, published or not yet: what the next check starts from (the worker runs
+    checks one after another, so an edit made while one runs is checked from its result)."""
     cache: dict[str, Any] = field(default_factory=dict)
     """What the features derive from the analysis (indexes of lines), dropped with it."""
 
@@ -78,6 +84,16 @@ class OdServer(LanguageServer):
             state.pending.cancel()
         state.pending = asyncio.get_running_loop().call_later(delay, self._start_check, uri)
 
+    def edited(self, uri: str) -> None:
+        """Check the text after an edit: at once after a quiet spell, else when the burst of edits pauses."""
+        state = self.open.get(uri)
+        if state is None:
+            return
+        now = asyncio.get_running_loop().time()
+        burst = state.pending is not None or now - state.changed < DEBOUNCE
+        state.changed = now
+        self.schedule(uri, DEBOUNCE if burst else 0)
+
     def _start_check(self, uri: str) -> None:
         task = asyncio.get_running_loop().create_task(self.check(uri))
         self.tasks.add(task)  # the loop keeps only a weak reference to a task
@@ -105,9 +121,7 @@ class OdServer(LanguageServer):
         loop = asyncio.get_running_loop()
         if state.analysis is not None:
             try:
-                found = await loop.run_in_executor(
-                    self.worker, reanalyse, state.analysis, uri, text, version, state.encoding, self.options
-                )
+                found = await loop.run_in_executor(self.worker, self._reanalysed, uri, state, text, version)
             except Exception as error:  # the whole text read answers all the same
                 print(f"cantools-od lsp: {uri}: incremental check: {type(error).__name__}: {error}", file=sys.stderr)
                 found = None
@@ -115,10 +129,23 @@ class OdServer(LanguageServer):
                 return found
             await self.publish_quick(uri, state.analysis, text, version)
         try:
-            return await loop.run_in_executor(self.worker, analyse, uri, text, version, state.encoding, self.options)
+            return await loop.run_in_executor(self.worker, self._analysed, uri, state, text, version)
         except Exception as error:  # a bug must not stop the server: say it in one line
             print(f"cantools-od lsp: {uri}: {type(error).__name__}: {error}", file=sys.stderr)
             return Analysis(version, text, None, refusal=("LNT001", f"cannot check: {type(error).__name__}: {error}"))
+
+    def _reanalysed(self, uri: str, state: Open, text: str, version: int | None) -> Analysis | None:
+        """In the worker: `reanalyse` from the worker's newest analysis."""
+        base = state.latest or state.analysis
+        found = reanalyse(base, uri, text, version, state.encoding, self.options) if base is not None else None
+        if found is not None:
+            state.latest = found
+        return found
+
+    def _analysed(self, uri: str, state: Open, text: str, version: int | None) -> Analysis:
+        """In the worker: `analyse`, kept as the worker's newest analysis."""
+        state.latest = analyse(uri, text, version, state.encoding, self.options)
+        return state.latest
 
     async def publish_quick(self, uri: str, before: Analysis, text: str, version: int | None) -> None:
         """Publish the quick findings of an edit inside one object (quick.py), without a version: the
@@ -154,7 +181,7 @@ def build() -> OdServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: OdServer, params: types.DidChangeTextDocumentParams) -> None:
-        ls.schedule(params.text_document.uri, DEBOUNCE)
+        ls.edited(params.text_document.uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
     def did_save(ls: OdServer, params: types.DidSaveTextDocumentParams) -> None:

@@ -16,7 +16,7 @@ from cantools_od.lint.output import as_json
 from cantools_od.lsp.document import Analysis, Encoding, analyse
 from cantools_od.lsp.incremental import reanalyse
 
-from support import cli_command, corpus_file
+from support import ROOT, cli_command, corpus_file
 
 # The largest corpus file; one with CompactPDO; a DCF; a file of another vendor and layout.
 FILES = [
@@ -115,3 +115,27 @@ def test_a_value_edit_of_the_largest_file_is_read_again_incrementally(tmp_path: 
     fresh = lint(analyse(uri, "".join(lines), 2, encoding, options).device or found.device, options)
     assert as_json(found.findings) == as_json(fresh)
     assert any(f.location.line == number + 2 for f in found.findings)  # the new value is judged
+
+
+def test_per_object_findings_are_judged_again_on_the_edited_object_and_moved_elsewhere(tmp_path: Path) -> None:
+    """The per-object rules' findings the incremental check keeps (lint/runner.py) are never stale: the edited
+    object's appear and go with its values, another object's move with the lines the edit adds and removes."""
+    text = (ROOT / "eds" / "io_device.eds").read_text()
+    text = text.replace("DefaultValue=0x00\nPDOMapping=1", "DefaultValue=300\nPDOMapping=1", 1)  # [6000sub1]: EDS034
+    uri, encoding, options = (tmp_path / "io.eds").as_uri(), Encoding(), LintOptions()
+    before = analyse(uri, text, 1, encoding, options)
+    later = [f.location.line for f in before.findings if f.code == "EDS034"]
+    assert later and before.linted is not None
+    steps = [
+        ("DefaultValue=10\n", "DefaultValue=5000\nParameterValue=1\n", {"EDS035", "EDS052"}, 1),  # [2000sub2]
+        ("DefaultValue=5000\nParameterValue=1\n", "DefaultValue=10\n", set(), 0),
+    ]
+    for version, (old, new, codes, moved) in enumerate(steps, 2):
+        edited = before.text.replace(old, new, 1)
+        found = reanalyse(before, uri, edited, version, encoding, options)
+        fresh = analyse(uri, edited, version, encoding, options)
+        assert found is not None and found.linted is not None
+        assert as_json(found.findings) == as_json(fresh.findings)
+        assert {f.code for f in found.findings} - {"EDS034"} == codes
+        assert [f.location.line for f in found.findings if f.code == "EDS034"] == [line + moved for line in later]
+        before = found

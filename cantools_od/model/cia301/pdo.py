@@ -76,7 +76,8 @@ def partner(index: int) -> int | None:
 
 def count_pdos(indices: Iterable[int], direction: str) -> int:
     """How many communication records of `direction` the indices hold (what NrOfRXPDO/NrOfTXPDO count)."""
-    return sum(1 for index in indices if is_comm(index, direction))
+    records = range(COMM_BASE[direction], COMM_BASE[direction] + PDO_SPAN)  # `is_comm(index, direction)`, at once
+    return sum(1 for index in indices if index in records)
 
 
 def is_mpdo_count(count: int | None) -> bool:

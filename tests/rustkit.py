@@ -42,7 +42,9 @@ __all__ = [
     "write_crate",
 ]
 
-TIMEOUT = 600
+# A guard against a hung compiler, not a speed limit: the corpus crate takes about 2 min of CPU, several times
+# that on a machine busy with other work (600 s was exceeded at a load of 14).
+TIMEOUT = 1800
 
 
 def _search_path() -> str:

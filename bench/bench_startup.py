@@ -6,7 +6,7 @@ by process so that other jobs on the machine hit both alike.
     .venv/bin/python bench/bench_startup.py --against ../main/.venv/bin/cantools-od --runs 15
     .venv/bin/python bench/bench_startup.py --gc                          # also the garbage collector's share
 
-The commands: `--version`, and `lint`, `dump`, `fmt --check`, `gen -t c` of the repository's
+The commands: `--version`, and `lint`, `dump`, `fmt --check`, `gen -t c`, `gen -t rust` of the repository's
 eds/cia402_drive.eds (10 KB, nearly all start-up), each in a temporary folder (no configuration file found).
 `--gc` runs each command once more in process with a `gc.callbacks` hook and prints the time the cyclic
 collector took and its number of passes.
@@ -34,6 +34,7 @@ COMMANDS = {
     "dump": ["dump", "small.eds"],
     "fmt --check": ["fmt", "--check", "small.eds"],
     "gen -t c": ["gen", "-t", "c", "small.eds", "-o", "out"],
+    "gen -t rust": ["gen", "-t", "rust", "small.eds", "-o", "out-rust"],
 }
 
 _GC_HOOK = """

@@ -7,7 +7,7 @@ STAMP := $(VENV)/.installed
 
 .PHONY: demo test lint clean
 
-$(STAMP): pyproject.toml $(shell find cantools_od templates schemas -type f -not -name '*.pyc' 2>/dev/null)
+$(STAMP): pyproject.toml hatch_build.py $(shell find cantools_od templates schemas -type f -not -name '*.pyc' 2>/dev/null)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet ".[test]"

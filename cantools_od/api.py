@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-import json
 import os
 from pathlib import Path
 from typing import Literal
 
 from pydantic import ValidationError
 
-from . import files
 from .eds.format import IntStyle
 from .eds.reader import read_bytes
 from .model import Device
@@ -71,6 +69,8 @@ def _json_model(raw: bytes, source: str, node_id: int | None, strict: bool) -> D
 def _check_model_keys(raw: bytes) -> None:
     """JSON that is no model at all (an array, a number, `{"name": ...}` of some other tool) is no
     device description (EDS000); a model with keys it does not have is a broken model (JSN001)."""
+    import json  # only for JSON input: start-up counts
+
     try:
         parsed = json.loads(raw)
     except ValueError:
@@ -172,4 +172,6 @@ def format_for(path: Path) -> Format:
 
 def write_if_changed(path: Path, data: bytes) -> bool:
     """Atomically replace `path` with `data` unless it already holds exactly that (see files.py)."""
+    from . import files  # only when something is written
+
     return files.write_if_changed(path, data)

@@ -54,7 +54,6 @@ from __future__ import annotations
 
 import bisect
 import re
-import tomllib
 import unicodedata
 from collections.abc import Iterator, Mapping
 from functools import lru_cache
@@ -291,6 +290,8 @@ def assign(device: Device, pins: Mapping[str, str] | None = None) -> Identifiers
 
 def load_pins(path: str | Path) -> dict[str, str]:
     """The `[identifiers]` table of a TOML pin file; ValueError when the file is not one."""
+    import tomllib  # only with a pin file: start-up counts
+
     try:
         data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as error:

@@ -8,7 +8,6 @@ model, which a formatter would then write back over the user's file.
 
 from __future__ import annotations
 
-import json
 import re
 from typing import Literal
 
@@ -59,6 +58,8 @@ def sniff(data: bytes, name: str = "") -> Kind:
 
 def _is_json_array(data: bytes) -> bool:
     """JSON of an array with several items or nested ones; `[]` or `[1000]` alone is also a section header."""
+    import json  # rare: a file that starts with "["
+
     try:
         parsed = json.loads(data)
     except ValueError:

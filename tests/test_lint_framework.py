@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import subprocess
+import sys
 from pathlib import Path
 
 from cantools_od import loads
@@ -141,3 +142,29 @@ def test_count_fix_rewrites_only_the_count_lines(tmp_path: Path) -> None:
     assert run_lint(tmp_path, "counts.eds", "--select", "EDS104", "--fix", "--unsafe-fixes").returncode == 0
     expected = source.replace("NrOfEntries=5", "NrOfEntries=1").replace("ObjectLinks=3", "ObjectLinks=1")
     assert target.read_bytes() == expected.encode()
+
+
+_EXAMPLES_UNBUILT = """
+import sys
+from cantools_od.lint import examples
+made = []
+for name in ("pdo", "record", "var", "section", "identity"):
+    setattr(examples, name, lambda *a, _name=name, **k: made.append(_name) or "")
+from cantools_od import loads
+from cantools_od.lint import RULES, lint
+from cantools_od.lint.codes import load
+load()
+lint(loads(sys.argv[1].encode(), source="t.eds"))
+print(len(made), len(RULES))
+RULES["PDO001"].example
+print(len(made))
+"""
+
+
+def test_lint_does_not_build_rule_examples() -> None:
+    # Start-up of every `lint`: the examples made with the builders of `examples` are made when read (`rules`,
+    # the documentation), not when the rule modules are imported.
+    run = subprocess.run([sys.executable, "-c", _EXAMPLES_UNBUILT, BAD_VALUE], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    before, rules, after = (int(n) for n in run.stdout.split())
+    assert before == 0 and rules > 100 and after > 0

@@ -303,3 +303,26 @@ def test_orphan_sub_object_section_is_kept_and_reported() -> None:
     assert (diag.code, diag.location.line) == ("EDS103", 1)
     assert device.other_sections[0].name == "2000sub1"
     assert device.other_sections[0].entries["ParameterName"] == "Orphan"
+
+
+_COB_ID = "[1800sub1]\nParameterName=COB-ID\nDataType=0x0007\nAccessType=rw\nDefaultValue={value}\n"
+
+
+@pytest.mark.parametrize(
+    ("value", "encoding", "dialect"),
+    [
+        ("0x180 + $NODEID", "utf-8", Dialect.PYTHON_CANOPEN),
+        ("0x180+$nodeid ", "utf-8", Dialect.PYTHON_CANOPEN),
+        ("0x180 +\x1c$NODEID", "utf-8", Dialect.PYTHON_CANOPEN),  # a blank to `str.split`, not to a bytes pattern
+        ("0x180 +\u00a0$NODEID", "utf-8", Dialect.PYTHON_CANOPEN),  # two bytes in UTF-8
+        ("0x180 +\u2003$NODEID", "utf-8", Dialect.PYTHON_CANOPEN),  # three bytes in UTF-8
+        ("0x180 +\u00a0$NODEID", "latin-1", Dialect.PYTHON_CANOPEN),  # not UTF-8: read as a whole, decoded
+        ("$NODEID+0x180", "utf-8", Dialect.CIA306),  # the usual form says nothing of the tool
+        ("0x180 + $NODEID", "latin-1", Dialect.PYTHON_CANOPEN),
+    ],
+)
+def test_dialect_evidence_in_values_is_found_whatever_the_blanks(value: str, encoding: str, dialect: Dialect) -> None:
+    """The reader looks at every entry for dialect evidence only when the text may hold some (`+ $NODEID` at
+    the end of a value, CANopenNode's comments): the test for that must let every blank through."""
+    text = "[DeviceInfo]\nProductName=Drive \u00e9\n" + _COB_ID.format(value=value)
+    assert loads(text.encode(encoding)).dialect is dialect

@@ -449,8 +449,9 @@ def _plain_fields(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 
 def _canopennode(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
-    before = old.var.canopennode or CanopenNodeInfo()
-    after = new.var.canopennode or CanopenNodeInfo()
+    empty = CanopenNodeInfo.model_construct()  # all None; no schema built at validation
+    before = old.var.canopennode or empty
+    after = new.var.canopennode or empty
     for field in CanopenNodeInfo.model_fields:
         was, now = getattr(before, field), getattr(after, field)
         if was == now:

@@ -34,16 +34,20 @@ def device_changes(old: Device, new: Device) -> Iterator[Change]:
     """Every device-level change, in a fixed order."""
     yield from _device_info(old, new)
     yield from _baud_rates(old, new)
-    yield from _dummy_usage(old.dummy_usage or DummyUsage(), new.dummy_usage or DummyUsage())
+    yield from _dummy_usage(
+        old.dummy_usage or DummyUsage.model_construct(), new.dummy_usage or DummyUsage.model_construct()
+    )
     yield from _plain_section(Kind.FILE_INFO, Impact.COSMETIC, "file_info", old.file_info, new.file_info)
     yield from _plain_section(
         Kind.COMMISSIONING,
         Impact.VALUE,
         "commissioning",
-        old.commissioning or Commissioning(),
-        new.commissioning or Commissioning(),
+        old.commissioning or Commissioning.model_construct(),
+        new.commissioning or Commissioning.model_construct(),
     )
-    yield from _comments(old.comments or Comments(), new.comments or Comments(), old, new)
+    yield from _comments(
+        old.comments or Comments.model_construct(), new.comments or Comments.model_construct(), old, new
+    )
     yield from _raw_sections(old.module_sections, new.module_sections, Impact.VALUE)
     yield from _raw_sections(old.other_sections, new.other_sections, Impact.COSMETIC)
 

@@ -89,7 +89,7 @@ def command(
     from ..identifiers import is_identifier, pin_file_for
     from ..model.cia301.pdo import frame_bits
     from ..views.partial import unfit_values
-    from ..xdd.reader import refused
+    from ..xdd import refused
     from .canopennode import prepare_canopennode
 
     if explain and "canopennode" not in targets:

@@ -88,8 +88,23 @@ def _telling_keys(keys: tuple[str, ...]) -> bool:
 
 # Comments only CANopenNode's tools write (a match at the start, as `str.startswith`).
 _canopennode_comment = re.compile(";StorageLocation|;TPDODetectCos").match
-MARKERS = ("$", ";StorageLocation", ";TPDODetectCos")
-"""What a text must hold for `_other` to find evidence in anything but a key (`CreatedBy`, `EDSVersion`)."""
+MARKERS = (";StorageLocation", ";TPDODetectCos")
+"""Comments of which a text must hold one, or else a `+ $NODEID` ending (`_PLUS_DOLLAR`), for `_other` to find
+evidence in anything but a key (`CreatedBy`, `EDSVersion`)."""
+# What `_NODEID_LAST` needs of a value, and more: "+", blanks, "$". In UTF-8 bytes, a blank `str` patterns know and
+# `bytes` patterns do not is \x1c-\x1f or non-ASCII: any such byte is taken as one.
+_PLUS_DOLLAR = re.compile(r"\+\s*\$")
+_PLUS_DOLLAR_UTF8 = re.compile(rb"\+(?:\s|[\x1c-\x1f\x80-\xff])*\$")
+
+
+def may_hold_markers(data: bytes | str) -> bool:
+    """Whether the text (UTF-8 bytes, or decoded) may hold dialect evidence besides keys: False lets the reader
+    look only at sections with telling keys. Most files have a `$NODEID+...` but no `+ $NODEID` ending."""
+    if isinstance(data, bytes):
+        return any(marker.encode("ascii") in data for marker in MARKERS) or bool(_PLUS_DOLLAR_UTF8.search(data))
+    return any(marker in data for marker in MARKERS) or bool(_PLUS_DOLLAR.search(data))
+
+
 _CANOPENNODE_TOOL = re.compile("canopen(node|editor)|libedssharp", re.IGNORECASE)
 
 

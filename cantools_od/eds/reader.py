@@ -28,7 +28,7 @@ from ..model.assemble import assemble, construct, field_defaults
 from . import ini, keys
 from .compact import apply_compact_sections, expand_compact_pdo, expand_compact_sub_objects
 from .decode import decode, utf8_pieces
-from .dialect import MARKERS, DialectEvidence, directive
+from .dialect import DialectEvidence, directive, may_hold_markers
 from .report import Report
 from .sections import Collected, collect, raw_section
 from .storage import PREFIX, read_storage_groups
@@ -69,13 +69,13 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
         repeated = ini.repeated_section_names(data)
         try:
             report = Report(file)
-            markers = any(marker.encode("ascii") in data for marker in MARKERS)
+            markers = may_hold_markers(data)
             device = _build(utf8_pieces(data), repeated, report, file, STORAGE_MARK in data, markers)
         except UnicodeDecodeError:  # read again as a whole, in the fallback encoding
             report = Report(file)
             text, encoding_note = decode(data)
             report.warning("EDS100", encoding_note or "not UTF-8", 1, 1)
-            markers = any(marker in text for marker in MARKERS)
+            markers = may_hold_markers(text)
             device = _build([text], ini.repeated_section_names(text), report, file, STORAGE_MARK in data, markers)
         if dcf is not None:
             device.is_dcf = dcf
@@ -193,7 +193,7 @@ def _build(
     pieces: Iterable[str], repeated: set[str], report: Report, file: str, storage: bool, markers: bool = True
 ) -> Device:
     """The device; `storage`: the text may hold CANopenNode's storage-group comments (see storage.py); `markers`:
-    it may hold dialect evidence besides keys (see dialect.MARKERS)."""
+    it may hold dialect evidence besides keys (see dialect.may_hold_markers)."""
     stream = ini.Stream(pieces)
     device = Device.model_construct(
         file_info=construct(FileInfo, {}),

@@ -51,7 +51,7 @@ def sections(
         if section.entries or section.comments
     ]
     if device.commissioning is not None or dcf:
-        commissioning = device.commissioning or Commissioning()
+        commissioning = device.commissioning or Commissioning.model_construct()  # no schema built to write
         if dcf and device.node_id is not None:
             commissioning = commissioning.model_copy(update={"node_id": device.node_id})
         out.append(_keyed(COMMISSIONING, commissioning, COMMISSIONING_KEYS, style))

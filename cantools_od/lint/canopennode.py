@@ -40,7 +40,13 @@ PROFILE = "canopennode"
 # Rule examples: an ARRAY of two INTEGER16 gains, its sub-index 0 and one gain.
 _COUNT = ("Highest sub-index supported", UNSIGNED8.index, "ro", 2)
 _GAIN = ("Gain", INDEX_BY_NAME["INTEGER16"], "rw", 0)
-_ARRAY = ex.record(0x2000, "Gains", {0: _COUNT, 1: _GAIN, 2: _GAIN}).replace("ObjectType=0x9", "ObjectType=0x8", 1)
+
+
+def _array() -> str:
+    """The ARRAY 2000h of the examples below: two INTEGER16 gains."""
+    return ex.record(0x2000, "Gains", {0: _COUNT, 1: _GAIN, 2: _GAIN}).replace("ObjectType=0x9", "ObjectType=0x8", 1)
+
+
 _C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _SUPPORTED = (ObjectKind.VAR, ObjectKind.DOMAIN, ObjectKind.ARRAY, ObjectKind.RECORD)
 
@@ -91,8 +97,8 @@ def unsupported_type(ctx: Context) -> Iterator[Finding]:
 The stack keeps sub-index 0 of an ARRAY as `uint8_t` (`OD_obj_array_t.dataOrig0`) and reads it
 as the number of entries; CiA 301 defines it as UNSIGNED8 too. Another type there makes the
 generated data disagree with what the stack reads. Fix: DataType=0x0005 on sub-index 0.""",
-    "; also: EDS025 (CiA 301 says the same)\n" + _ARRAY.replace("0x0005", "0x0007", 1),
-    fixed=_ARRAY,
+    lambda: "; also: EDS025 (CiA 301 says the same)\n" + _array().replace("0x0005", "0x0007", 1),
+    fixed=_array,
 )
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -112,8 +118,8 @@ A CANopenNode ARRAY is one C array: one element type, one element size and one a
 sub-index 1, or an AccessType or PDOMapping that gives other ODA_* bits (`ro` and `const` give
 the same), cannot be represented; the exporter would silently use sub-index 1's. Fix: make the
 elements alike, or declare the object as a RECORD.""",
-    _ARRAY.replace("AccessType=rw", "AccessType=ro", 2).replace("AccessType=ro", "AccessType=rw", 2),
-    fixed=_ARRAY,
+    lambda: _array().replace("AccessType=rw", "AccessType=ro", 2).replace("AccessType=ro", "AccessType=rw", 2),
+    fixed=_array,
 )
 def array_elements(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -147,10 +153,10 @@ sub-entries from the OD list, so an ARRAY's sub-indices must run 0, 1, ... n wit
 ARRAY with no element would be a zero-length C array, which C forbids, and a RECORD needs
 sub-index 0 plus at least one member. Fix: add the missing sub-indices (or use a RECORD, whose
 sub-indices may have gaps).""",
-    ex.record(0x2000, "Gains", {0: (*_COUNT[:3], 3), 1: _GAIN, 3: _GAIN}).replace(
+    lambda: ex.record(0x2000, "Gains", {0: (*_COUNT[:3], 3), 1: _GAIN, 3: _GAIN}).replace(
         "ObjectType=0x9", "ObjectType=0x8", 1
     ),
-    fixed=_ARRAY,
+    fixed=_array,
 )
 def array_shape(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -184,8 +190,10 @@ function on; warnings naming the switch when it declares none; nothing when it t
 Fix: add the object, or declare the configuration that leaves the function out; the count label
 follows from the index (or set `count_label` in the .canopennode.toml file).""",
     "; no [1017]\n[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
-    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n"
-    + ex.var(0x1017, "Producer heartbeat time", 0x0006, mapping=0),
+    fixed=lambda: (
+        "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n"
+        + ex.var(0x1017, "Producer heartbeat time", 0x0006, mapping=0)
+    ),
 )
 def required_counts(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
@@ -245,8 +253,10 @@ with mapping 1600h+i, TPDO i 1800h+i with 1A00h+i, SRDO i 1301h+i with 1381h+i, 
 consecutive and paired. Count labels and storage groups become C names, so they must be C
 identifiers. Fix: correct the objects or the
 `count_label` setting.""",
-    ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=3) + ex.CONTROLWORD + ex.TARGET_POSITION,
-    fixed=ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=2) + ex.CONTROLWORD + ex.TARGET_POSITION,
+    lambda: ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=3) + ex.CONTROLWORD + ex.TARGET_POSITION,
+    fixed=lambda: (
+        ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=2) + ex.CONTROLWORD + ex.TARGET_POSITION
+    ),
 )
 def count_limits(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)

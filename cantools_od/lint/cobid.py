@@ -57,8 +57,8 @@ def _high_bits(cob: Cob, node_id: int) -> bool:
 Bit 29 of a COB-ID selects the frame format: 0 for an 11-bit CAN-ID, whose bits 28-11 must
 then be 0; 1 for a 29-bit CAN-ID. An 11-bit COB-ID with higher bits set is not a CAN-ID, and
 devices refuse it. Checked for PDOs, SYNC, TIME, EMCY and SDO COB-IDs.""",
-    ex.pdo("tx", "0x60410010", number=5, cob="0x80000981") + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010", number=5, cob="0x80000181") + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", number=5, cob="0x80000981") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010", number=5, cob="0x80000181") + ex.STATUSWORD,
 )
 def check_frame_bits(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -96,8 +96,8 @@ CiA 301 reserves CAN-IDs for NMT (000h), SYNC/EMCY area below 080h, the SDO (581
 601h-67Fh), NMT error control (701h-77Fh) and other services (101h-180h, 6E0h-6FFh, 780h-7FFh);
 a PDO must not use them. With `$NODEID` the COB-ID is checked for every node-ID the device may
 have, and the first one that fails is named.""",
-    ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x585") + ex.STATUSWORD,
-    fixed=ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
+    lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x585") + ex.STATUSWORD,
+    fixed=lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
 )
 def check_restricted(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -119,8 +119,8 @@ def check_restricted(ctx: Context) -> Iterator[Finding]:
 CAN-IDs 080h (SYNC), 081h-0FFh (EMCY of the pre-defined connection set) and 100h (TIME) belong
 to those services by default. A PDO there collides as soon as a node uses them, and its high
 priority starves other traffic.""",
-    ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x90") + ex.STATUSWORD,
-    fixed=ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
+    lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x90") + ex.STATUSWORD,
+    fixed=lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
 )
 def check_service_ids(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -160,8 +160,8 @@ PDOs 1-4 (RPDO 200h/300h/400h/500h, TPDO 180h/280h/380h/480h) COB-IDs of base + 
 describes every node of its kind, so it writes them as `$NODEID+0x180`: a literal such as
 `0x181` fits one node-ID only, and another base breaks the convention masters rely on.
 A disabled PDO without CAN-ID (0x80000000) is accepted. Not checked in DCFs.""",
-    ex.pdo("tx", "0x60410010", cob="0x181") + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", cob="0x181") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_predefined(ctx: Context) -> Iterator[Finding]:
     if ctx.device.is_dcf:
@@ -189,8 +189,8 @@ The pre-defined connection set ends at PDO 4; PDOs 5 to 512 have no default CAN-
 default COB-ID should be invalid (bit 31 set, e.g. 0x80000000) until a master assigns one.
 `$NODEID` there is legal CiA 306, but CANopenNode rebases only PDOs 1-4, so firmware and EDS
 then disagree. Not checked in DCFs.""",
-    ex.pdo("rx", "0x60400010", number=5, cob="$NODEID+0x1C0") + ex.CONTROLWORD,
-    fixed=ex.pdo("rx", "0x60400010", number=5) + ex.CONTROLWORD,
+    lambda: ex.pdo("rx", "0x60400010", number=5, cob="$NODEID+0x1C0") + ex.CONTROLWORD,
+    fixed=lambda: ex.pdo("rx", "0x60400010", number=5) + ex.CONTROLWORD,
 )
 def check_extra_pdos_invalid(ctx: Context) -> Iterator[Finding]:
     if ctx.device.is_dcf:
@@ -221,16 +221,20 @@ another message the device sends (EMCY, SDO server response, SDO client request,
 when produced, NMT error control at 700h + node-ID), on one CAN-ID collide: arbitration fails
 and receivers mix up the data. `$NODEID` COB-IDs are compared for every node-ID the device may
 have.""",
-    ex.NODE_5
-    + ex.pdo("tx", "0x60410010", cob="0x185")
-    + ex.pdo("tx", "0x60640020", number=2, cob="0x185")
-    + ex.STATUSWORD
-    + ex.POSITION,
-    fixed=ex.NODE_5
-    + ex.pdo("tx", "0x60410010", cob="0x185")
-    + ex.pdo("tx", "0x60640020", number=2, cob="0x285")
-    + ex.STATUSWORD
-    + ex.POSITION,
+    lambda: (
+        ex.NODE_5
+        + ex.pdo("tx", "0x60410010", cob="0x185")
+        + ex.pdo("tx", "0x60640020", number=2, cob="0x185")
+        + ex.STATUSWORD
+        + ex.POSITION
+    ),
+    fixed=lambda: (
+        ex.NODE_5
+        + ex.pdo("tx", "0x60410010", cob="0x185")
+        + ex.pdo("tx", "0x60640020", number=2, cob="0x285")
+        + ex.STATUSWORD
+        + ex.POSITION
+    ),
 )
 def check_own_collisions(ctx: Context) -> Iterator[Finding]:
     cobs = producers(ctx.device, device_pdos(ctx))
@@ -247,16 +251,20 @@ def check_own_collisions(ctx: Context) -> Iterator[Finding]:
 Two valid RPDOs with one CAN-ID both receive every frame of that producer. CiA 301 allows it
 (one TPDO feeding several mappings, or a broadcast to several nodes); it is reported so that it
 is a decision, not an accident.""",
-    ex.NODE_5
-    + ex.pdo("rx", "0x60400010", cob="0x205")
-    + ex.pdo("rx", "0x607A0020", number=2, cob="0x205")
-    + ex.CONTROLWORD
-    + ex.TARGET_POSITION,
-    fixed=ex.NODE_5
-    + ex.pdo("rx", "0x60400010", cob="0x205")
-    + ex.pdo("rx", "0x607A0020", number=2, cob="0x305")
-    + ex.CONTROLWORD
-    + ex.TARGET_POSITION,
+    lambda: (
+        ex.NODE_5
+        + ex.pdo("rx", "0x60400010", cob="0x205")
+        + ex.pdo("rx", "0x607A0020", number=2, cob="0x205")
+        + ex.CONTROLWORD
+        + ex.TARGET_POSITION
+    ),
+    fixed=lambda: (
+        ex.NODE_5
+        + ex.pdo("rx", "0x60400010", cob="0x205")
+        + ex.pdo("rx", "0x607A0020", number=2, cob="0x305")
+        + ex.CONTROLWORD
+        + ex.TARGET_POSITION
+    ),
 )
 def check_shared_rpdo_ids(ctx: Context) -> Iterator[Finding]:
     cobs = [cob for pdo, cob in _pdo_cobs(ctx) if pdo.direction == RX]
@@ -282,11 +290,13 @@ def _comm_subs(ctx: Context) -> Iterator[tuple[Pdo, Slot]]:
 Sub0 of a PDO communication record holds the highest sub-index the record supports (2..6).
 Sub-objects above it do not exist for an SDO client, so an inhibit time or event timer
 described there is never used.""",
-    ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}).replace(
-        "DefaultValue=5\n", "DefaultValue=2\n", 1
-    )
-    + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
+    lambda: (
+        ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}).replace(
+            "DefaultValue=5\n", "DefaultValue=2\n", 1
+        )
+        + ex.STATUSWORD
+    ),
+    fixed=lambda: ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
 )
 def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -310,8 +320,8 @@ def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
     """
 Inhibit time (sub3) and SYNC start value (sub6) only govern transmission; an RPDO receives, so
 a non-zero default there has no effect and suggests the record was copied from a TPDO.""",
-    ex.pdo("rx", "0x60400010", comm={3: ("Inhibit time", 0x0006, "rw", 10)}) + ex.CONTROLWORD,
-    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    lambda: ex.pdo("rx", "0x60400010", comm={3: ("Inhibit time", 0x0006, "rw", 10)}) + ex.CONTROLWORD,
+    fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_rpdo_tx_only(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -330,8 +340,8 @@ CiA 301 fixes the types of the PDO communication record: transmission type (sub2
 compatibility entry (sub4) and SYNC start value (sub6) are UNSIGNED8, the COB-ID (sub1) is
 UNSIGNED32, inhibit time (sub3) and event timer (sub5) are UNSIGNED16. Masters write them
 with these sizes; another size makes the SDO download fail.""",
-    ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0007, "rw", 100)}) + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0007, "rw", 100)}) + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
 )
 def check_comm_types(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -352,8 +362,13 @@ def check_comm_types(ctx: Context) -> Iterator[Finding]:
     """
 The sub-objects of a PDO communication record configure PDOs; CiA 301 does not map them into
 PDOs. PDOMapping=1 there invites a tool to offer them for mapping.""",
-    (ex.pdo("tx", "0x60410010").replace("$NODEID+0x180\nPDOMapping=0", "$NODEID+0x180\nPDOMapping=1") + ex.STATUSWORD),
-    fixed=(ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
+    (
+        lambda: (
+            ex.pdo("tx", "0x60410010").replace("$NODEID+0x180\nPDOMapping=0", "$NODEID+0x180\nPDOMapping=1")
+            + ex.STATUSWORD
+        )
+    ),
+    fixed=(lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
 )
 def check_comm_mappable(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -370,8 +385,8 @@ def check_comm_mappable(ctx: Context) -> Iterator[Finding]:
     """
 Transmission types 241 to 251 are reserved by CiA 301; a device answers an SDO download of one
 with an abort, and its behaviour with one as default is undefined.""",
-    ex.pdo("tx", "0x60410010", tt=245) + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010", tt=1) + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", tt=245) + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010", tt=1) + ex.STATUSWORD,
 )
 def check_reserved_tt(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -388,8 +403,8 @@ def check_reserved_tt(ctx: Context) -> Iterator[Finding]:
     """
 Transmission types 252 (synchronous, RTR only) and 253 (asynchronous, RTR only) describe when a
 TPDO answers a remote request; CiA 301 does not define them for an RPDO.""",
-    ex.pdo("rx", "0x60400010", tt=253) + ex.CONTROLWORD,
-    fixed=ex.pdo("rx", "0x60400010", tt=255) + ex.CONTROLWORD,
+    lambda: ex.pdo("rx", "0x60400010", tt=253) + ex.CONTROLWORD,
+    fixed=lambda: ex.pdo("rx", "0x60400010", tt=255) + ex.CONTROLWORD,
 )
 def check_rpdo_rtr(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -417,8 +432,8 @@ signals an event, or when its event timer expires. With the event timer at 0 it 
 such events; if the mapped objects never raise one, the TPDO stays silent until a master sets a
 timer. Informational, for valid TPDOs that map something: whether the application raises events
 is not in the EDS.""",
-    ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
 )
 def check_event_without_timer(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, timer, _ in _timing(ctx):
@@ -439,8 +454,8 @@ def check_event_without_timer(ctx: Context) -> Iterator[Finding]:
     """
 The SYNC start value (sub6) picks the SYNC counter value at which a cyclic synchronous TPDO
 (transmission type 1-240) starts. For any other transmission type the device ignores it.""",
-    ex.pdo("tx", "0x60410010", tt=0, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010", tt=1, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", tt=0, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010", tt=1, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
 )
 def check_sync_start(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, _, start in _timing(ctx):
@@ -461,8 +476,8 @@ def check_sync_start(ctx: Context) -> Iterator[Finding]:
 The event timer (sub5, ms) triggers event-driven TPDOs (transmission type 254/255). A TPDO that
 is sent on SYNC (0-240) or on request (252/253) ignores it, so a non-zero value promises a
 period the device does not keep.""",
-    ex.pdo("tx", "0x60410010", tt=1, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", tt=1, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
 )
 def check_timer_ignored(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, timer, _ in _timing(ctx):
@@ -483,14 +498,24 @@ def check_timer_ignored(ctx: Context) -> Iterator[Finding]:
 The inhibit time (sub3) counts in 100 us, the event timer (sub5) in ms. When the event period is
 shorter than the inhibit time, the inhibit time wins and the TPDO is sent less often than the
 event timer says; often the units were confused.""",
-    ex.pdo(
-        "tx", "0x60410010", tt=254, comm={3: ("Inhibit time", 0x0006, "rw", 200), 5: ("Event timer", 0x0006, "rw", 10)}
-    )
-    + ex.STATUSWORD,
-    fixed=ex.pdo(
-        "tx", "0x60410010", tt=254, comm={3: ("Inhibit time", 0x0006, "rw", 50), 5: ("Event timer", 0x0006, "rw", 10)}
-    )
-    + ex.STATUSWORD,
+    lambda: (
+        ex.pdo(
+            "tx",
+            "0x60410010",
+            tt=254,
+            comm={3: ("Inhibit time", 0x0006, "rw", 200), 5: ("Event timer", 0x0006, "rw", 10)},
+        )
+        + ex.STATUSWORD
+    ),
+    fixed=lambda: (
+        ex.pdo(
+            "tx",
+            "0x60410010",
+            tt=254,
+            comm={3: ("Inhibit time", 0x0006, "rw", 50), 5: ("Event timer", 0x0006, "rw", 10)},
+        )
+        + ex.STATUSWORD
+    ),
 )
 def check_timer_vs_inhibit(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, inhibit, timer, _ in _timing(ctx):

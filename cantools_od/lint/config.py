@@ -38,6 +38,8 @@ class Selection:
     ignore: tuple[str, ...] = ()
     per_file_ignores: dict[str, tuple[str, ...]] = field(default_factory=dict)
     root: Path = Path()
+    # The per-file ignores found for each file name: every rule and finding asks, and resolving paths is slow.
+    _ignores: dict[str, tuple[str, ...]] = field(default_factory=dict, compare=False, repr=False)
 
     def enabled(self, code: str, file: str) -> bool:
         if self.select and not any(matches(selector, code) for selector in self.select):
@@ -49,6 +51,12 @@ class Selection:
     def _file_ignores(self, file: str) -> tuple[str, ...]:
         if not self.per_file_ignores or not file:
             return ()
+        found = self._ignores.get(file)
+        if found is None:
+            found = self._ignores[file] = self._find_ignores(file)
+        return found
+
+    def _find_ignores(self, file: str) -> tuple[str, ...]:
         path = Path(file).resolve()
         try:
             relative = path.relative_to(self.root.resolve()).as_posix()

@@ -43,7 +43,7 @@ Every CANopen device implements 1000h (device type), 1001h (error register) and,
 v4.0, 1018h (identity object). Masters read them during boot-up to identify the device; a file
 without them cannot describe a conforming device.""",
     "; no [1018]\n[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001",
-    fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n" + ex.identity(),
+    fixed=lambda: "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n" + ex.identity(),
 )
 def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     listing = ctx.device.mandatory_objects
@@ -121,12 +121,16 @@ compared.
 
 Error: the LSS master looks for a device that does not exist.""",
     (
-        ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
-        + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x18")
+        lambda: (
+            ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
+            + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x18")
+        )
     ),
     fixed=(
-        ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
-        + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x17")
+        lambda: (
+            ex.NODE_5.replace("LSS_SerialNumber=0", "LSS_SerialNumber=0x17")
+            + ex.identity(serial="0x18").replace("DefaultValue=0x18", "DefaultValue=0x18\nParameterValue=0x17")
+        )
     ),
     fix_safety="No automatic fix (which number is right is known only on the device).",
 )
@@ -149,8 +153,8 @@ def serial_number(ctx: Context) -> Iterator[Finding]:
 NrOfRXPDO and NrOfTXPDO count the RPDO (1400h-15FFh) and TPDO (1800h-19FFh) communication
 objects the device has, the ones CompactPDO implies included. Tools size their PDO tables from
 these keys; a count that disagrees with the objects means a PDO is missing or the key is stale.""",
-    ("[DeviceInfo]\nNrOfRXPDO=2\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
-    fixed=("[DeviceInfo]\nNrOfRXPDO=1\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
+    (lambda: "[DeviceInfo]\nNrOfRXPDO=2\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
+    fixed=(lambda: "[DeviceInfo]\nNrOfRXPDO=1\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
 )
 def pdo_counts(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -178,8 +182,8 @@ def _fix_pdo_count(field: str, direction: str) -> Callable[[Device], None]:
 `Granularity=0` states that the PDO mapping cannot be changed (CiA 306, [DeviceInfo]). Mapping objects
 (1600h-17FFh, 1A00h-1BFFh) with writable sub-objects say the opposite; configuration tools
 either refuse to remap or remap a device that rejects it.""",
-    ("[DeviceInfo]\nGranularity=0\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
-    fixed=("[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
+    (lambda: "[DeviceInfo]\nGranularity=0\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
+    fixed=(lambda: "[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
 )
 def static_mapping(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info

@@ -27,8 +27,8 @@ E, W = Severity.ERROR, Severity.WARNING
 A PDO is described by a pair: the communication record (1400h/1800h + n - 1) says whether and
 when it is sent, the mapping record (1600h/1A00h + n - 1) what it carries. One without the other
 leaves the PDO unusable; configuration tools cannot set it up.""",
-    ex.pdo("rx", "0x60400010", parts="comm") + ex.CONTROLWORD,
-    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    lambda: ex.pdo("rx", "0x60400010", parts="comm") + ex.CONTROLWORD,
+    fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_pairs(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -54,10 +54,12 @@ def check_pairs(ctx: Context) -> Iterator[Finding]:
 CiA 301 defines the communication parameter as a RECORD of type PDO_COMMUNICATION_PARAMETER
 (0020h) and the mapping parameter as a RECORD of type PDO_MAPPING (0021h). An ARRAY is tolerated
 for the mapping, whose entries all share one type; anything else is not a PDO record.""",
-    "; also: EDS028 (an ARRAY's elements share one type)\n"
-    + ex.pdo("tx", "0x60410010").replace("ObjectType=0x9", "ObjectType=0x8", 1)
-    + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: (
+        "; also: EDS028 (an ARRAY's elements share one type)\n"
+        + ex.pdo("tx", "0x60410010").replace("ObjectType=0x9", "ObjectType=0x8", 1)
+        + ex.STATUSWORD
+    ),
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_record_kind(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -79,13 +81,15 @@ The COB-ID (sub1) and transmission type (sub2) of a communication record and the
 mapped objects (sub0) of a mapping record are mandatory in CiA 301. CiA 306 adds that a PDO
 described explicitly must describe all its sub-objects: CompactPDO fills in only the PDOs the
 file leaves out entirely, never a part of one.""",
-    ex.record(
-        0x1400,
-        "RPDO1 communication parameter",
-        {0: ("Highest sub-index supported", 0x0005, "ro", 1), 1: ("COB-ID", 0x0007, "rw", "$NODEID+0x200")},
-    )
-    + ex.pdo("rx", parts="map"),
-    fixed=ex.pdo("rx"),
+    lambda: (
+        ex.record(
+            0x1400,
+            "RPDO1 communication parameter",
+            {0: ("Highest sub-index supported", 0x0005, "ro", 1), 1: ("COB-ID", 0x0007, "rw", "$NODEID+0x200")},
+        )
+        + ex.pdo("rx", parts="map")
+    ),
+    fixed=lambda: ex.pdo("rx"),
 )
 def check_mandatory_subs(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -108,10 +112,14 @@ def check_mandatory_subs(ctx: Context) -> Iterator[Finding]:
 In a PDO_MAPPING record sub0 (number of mapped objects) is UNSIGNED8 and read-only (static
 mapping) or writable (dynamic mapping); every entry is an UNSIGNED32 holding index, sub-index
 and bit length. Another type cannot hold an entry; a write-only sub0 cannot be read back.""",
-    ex.pdo("tx", parts="comm")
-    + ex.record(0x1A00, "TPDO1 mapping parameter", {0: ("Number of mapped objects", 0x0005, "wo", 0)}),
-    fixed=ex.pdo("tx", parts="comm")
-    + ex.record(0x1A00, "TPDO1 mapping parameter", {0: ("Number of mapped objects", 0x0005, "rw", 0)}),
+    lambda: (
+        ex.pdo("tx", parts="comm")
+        + ex.record(0x1A00, "TPDO1 mapping parameter", {0: ("Number of mapped objects", 0x0005, "wo", 0)})
+    ),
+    fixed=lambda: (
+        ex.pdo("tx", parts="comm")
+        + ex.record(0x1A00, "TPDO1 mapping parameter", {0: ("Number of mapped objects", 0x0005, "rw", 0)})
+    ),
 )
 def check_mapping_types(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -143,8 +151,8 @@ Sub0 of a mapping record is the number of valid entries, sub1..sub<n>. A PDO hol
 entries (40h), and every counted entry must exist in the record, else the device and the tools
 disagree about what the PDO carries. FEh and FFh mark multiplexed PDOs (SAM-/DAM-MPDO) and are
 not counts.""",
-    ex.pdo("rx", "0x60400010", count=2) + ex.CONTROLWORD,
-    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    lambda: ex.pdo("rx", "0x60400010", count=2) + ex.CONTROLWORD,
+    fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_count(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -171,8 +179,8 @@ def check_count(ctx: Context) -> Iterator[Finding]:
 Entries 1..sub0 of a mapping record are all mapped; an entry of 0 inside that range maps
 nothing, and devices reject it ("hole in mapping"). Lower sub0 or fill the entry. Reported
 once per PDO: at sub0 when every counted entry is 0, else at the first empty entry.""",
-    ex.pdo("tx", "0x00000000", "0x60410010") + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x00000000", "0x60410010") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_holes(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -205,8 +213,8 @@ may name objects that only its modules create ([M<x>FixedObjects], [M<x>SubExten
 no error. In a DCF that lists its [ConnectedModules], a mapping is valid up to the first object
 neither the device nor a connected module creates: that entry is a warning (the device shortens
 the mapping there), the entries after it are not checked.""",
-    ex.pdo("rx", "0x21000010"),
-    fixed=ex.pdo("rx", "0x21000010") + ex.var(0x2100, "Setpoint", 0x0006, "rw"),
+    lambda: ex.pdo("rx", "0x21000010"),
+    fixed=lambda: ex.pdo("rx", "0x21000010") + ex.var(0x2100, "Setpoint", 0x0006, "rw"),
 )
 def check_exists(ctx: Context) -> Iterator[Finding]:
     modular = supports_modules(ctx.device)
@@ -235,8 +243,8 @@ def check_exists(ctx: Context) -> Iterator[Finding]:
     """
 A VAR object has only sub-index 0; a mapping entry that gives it another sub-index names
 nothing. Usually the entry should end in 00 before the length byte (0x60400010).""",
-    ex.pdo("rx", "0x60400110") + ex.CONTROLWORD,
-    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    lambda: ex.pdo("rx", "0x60400110") + ex.CONTROLWORD,
+    fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_var_subindex(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, obj, _ in mapped_objects(ctx):
@@ -255,8 +263,8 @@ def check_var_subindex(ctx: Context) -> Iterator[Finding]:
     """
 Only objects with PDOMapping=1 may be mapped (a missing key means 0). A device refuses any other
 (abort 0604 0041h), so the default mapping cannot be restored.""",
-    ex.pdo("tx", "0x60410010") + ex.var(0x6041, "Statusword", 0x0006, "ro", mapping=0),
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010") + ex.var(0x6041, "Statusword", 0x0006, "ro", mapping=0),
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_mappable(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, _, var in mapped_objects(ctx):
@@ -275,8 +283,8 @@ An RPDO writes the objects it maps, a TPDO reads them. A read-only or constant o
 RPDO, or a write-only object in a TPDO, is an error. rwr ("read on process input") marks an
 object for TPDOs and rww ("write on process output") one for RPDOs: rwr in an RPDO or rww in a
 TPDO is reported as a warning.""",
-    ex.pdo("rx", "0x60410010") + ex.STATUSWORD,
-    fixed=ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    lambda: ex.pdo("rx", "0x60410010") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
 def check_direction(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, _, var in mapped_objects(ctx):
@@ -309,8 +317,8 @@ fix rewrites the length byte from the type; it is unsafe (`--unsafe-fixes`): it 
 entry in the frame, and which side is wrong (the entry or the DataType) only the device tells. A
 BOOLEAN mapped as 8 bits, as CANopenNode stores it, is only a warning: such a device expects the
 byte.""",
-    ex.pdo("tx", "0x60410008") + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410008") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_length(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -341,8 +349,8 @@ def check_length(ctx: Context) -> Iterator[Finding]:
     """
 The mapped entries of a PDO travel in one CAN frame: at most 64 bits on classic CAN, 512 bits
 with CAN FD (`--can-fd`). A device refuses a longer mapping (abort 0604 0042h).""",
-    ex.pdo("tx", "0x60640020", "0x606C0020", "0x60410010") + ex.POSITION + ex.VELOCITY + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60640020", "0x606C0020") + ex.POSITION + ex.VELOCITY,
+    lambda: ex.pdo("tx", "0x60640020", "0x606C0020", "0x60410010") + ex.POSITION + ex.VELOCITY + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60640020", "0x606C0020") + ex.POSITION + ex.VELOCITY,
 )
 def check_total(ctx: Context) -> Iterator[Finding]:
     limit = ctx.options.max_pdo_bits
@@ -364,8 +372,8 @@ def check_total(ctx: Context) -> Iterator[Finding]:
 bytes only, so every entry's length and bit offset must be a multiple of 8 (1 allows bit-wise
 mapping). An entry off that grid cannot be configured on the device. Reported once, at
 Granularity, naming the first entry off the grid: either the key or the mapping is wrong.""",
-    ("[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
-    fixed=("[DeviceInfo]\nGranularity=1\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
+    (lambda: "[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
+    fixed=(lambda: "[DeviceInfo]\nGranularity=1\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
 )
 def check_granularity(ctx: Context) -> Iterator[Finding]:
     grain = ctx.device.device_info.granularity
@@ -389,8 +397,8 @@ def check_granularity(ctx: Context) -> Iterator[Finding]:
     """
 Mapping one object twice in a PDO sends (or writes) the same value twice; devices report it as
 a "duplicate map". It is usually a copy-and-paste slip in the default mapping.""",
-    ex.pdo("tx", "0x60410010", "0x60410010") + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x60410010", "0x60410010") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_duplicates(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -419,17 +427,21 @@ the value races between two producers. Checked in DCFs only: an EDS's default ma
 menu, and CiA 402 itself puts the controlword into each of its pre-defined RPDOs. Invalid PDOs
 are ignored.""",
     (
-        ex.NODE_5
-        + ex.pdo("rx", "0x60400010", cob="0x205")
-        + ex.pdo("rx", "0x60400010", number=2, cob="0x305")
-        + ex.CONTROLWORD
+        lambda: (
+            ex.NODE_5
+            + ex.pdo("rx", "0x60400010", cob="0x205")
+            + ex.pdo("rx", "0x60400010", number=2, cob="0x305")
+            + ex.CONTROLWORD
+        )
     ),
     fixed=(
-        ex.NODE_5
-        + ex.pdo("rx", "0x60400010", cob="0x205")
-        + ex.pdo("rx", "0x607A0020", number=2, cob="0x305")
-        + ex.CONTROLWORD
-        + ex.TARGET_POSITION
+        lambda: (
+            ex.NODE_5
+            + ex.pdo("rx", "0x60400010", cob="0x205")
+            + ex.pdo("rx", "0x607A0020", number=2, cob="0x305")
+            + ex.CONTROLWORD
+            + ex.TARGET_POSITION
+        )
     ),
 )
 def check_shared_rpdo_objects(ctx: Context) -> Iterator[Finding]:
@@ -469,8 +481,8 @@ and a data-type entry is a single value at sub-index 0: a dummy names sub-index 
 never 0x00050108) and a type of fixed size; strings, DOMAIN, record types and undefined indices
 cannot be dummies. `gen` refuses the same entries (GEN001), so a mapping lint rejects is never
 turned into code.""",
-    ex.pdo("rx", "0x00090008"),
-    fixed=ex.pdo("rx", "0x00050008"),
+    lambda: ex.pdo("rx", "0x00090008"),
+    fixed=lambda: ex.pdo("rx", "0x00050008"),
 )
 def check_dummy_shape(ctx: Context) -> Iterator[Finding]:
     for pdo, entry in dummies(ctx):
@@ -487,12 +499,18 @@ def check_dummy_shape(ctx: Context) -> Iterator[Finding]:
 A device supports dummy entries only for the data types its `[DummyUsage]` section enables
 (`Dummy0005=1`); a missing key or section means not supported. A default mapping with another
 dummy cannot be downloaded.""",
-    ex.section("DummyUsage", Dummy0001=0, Dummy0002=1, Dummy0003=1, Dummy0004=1, Dummy0005=0, Dummy0006=1, Dummy0007=1)
-    + ex.pdo("rx", "0x00050008"),
-    fixed=ex.section(
-        "DummyUsage", Dummy0001=0, Dummy0002=1, Dummy0003=1, Dummy0004=1, Dummy0005=1, Dummy0006=1, Dummy0007=1
-    )
-    + ex.pdo("rx", "0x00050008"),
+    lambda: (
+        ex.section(
+            "DummyUsage", Dummy0001=0, Dummy0002=1, Dummy0003=1, Dummy0004=1, Dummy0005=0, Dummy0006=1, Dummy0007=1
+        )
+        + ex.pdo("rx", "0x00050008")
+    ),
+    fixed=lambda: (
+        ex.section(
+            "DummyUsage", Dummy0001=0, Dummy0002=1, Dummy0003=1, Dummy0004=1, Dummy0005=1, Dummy0006=1, Dummy0007=1
+        )
+        + ex.pdo("rx", "0x00050008")
+    ),
 )
 def check_dummy_usage(ctx: Context) -> Iterator[Finding]:
     usage = ctx.device.dummy_usage
@@ -514,8 +532,8 @@ def check_dummy_usage(ctx: Context) -> Iterator[Finding]:
 A dummy entry tells a receiver which bits to skip; CiA 301 provides no dummy mapping for a
 TPDO, which would have to invent the data. Some devices send zeros, but portable files do not
 rely on it.""",
-    ex.pdo("tx", "0x00050008", "0x60410010") + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: ex.pdo("tx", "0x00050008", "0x60410010") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_dummy_in_tpdo(ctx: Context) -> Iterator[Finding]:
     for pdo, entry in dummies(ctx):
@@ -532,8 +550,8 @@ The length byte of a mapping entry is at most 40h (64 bits). Some vendors set it
 private flag (0x60410090), but CiA 301 reads the whole byte as the length: 144 bits. lint, pdo
 and gen all read it that way (PDO045, PDO046 and GEN001 follow); clearing the flag is left to
 the author.""",
-    "; also: PDO045, PDO046 (the length it reads)\n" + ex.pdo("tx", "0x60410090") + ex.STATUSWORD,
-    fixed=ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    lambda: "; also: PDO045, PDO046 (the length it reads)\n" + ex.pdo("tx", "0x60410090") + ex.STATUSWORD,
+    fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_length_flag(ctx: Context) -> Iterable[Finding]:
     for pdo in device_pdos(ctx):

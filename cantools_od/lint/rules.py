@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
@@ -105,22 +106,41 @@ class Context:
 Check = Callable[[Context], Iterable[Finding]]
 
 
+Text = str | Callable[[], str]
+"""An example as text, or a function that makes it: one built with `examples`' builders is made when
+the documentation or a test reads it, not each time `lint` imports the rule modules."""
+
+
 @dataclass(frozen=True)
 class Rule:
     code: str
     severity: Severity
     summary: str
     description: str
-    example: str
+    example_text: Text
     family: str
     check: Check | None  # None: reported while reading (see the reader codes)
-    fixed: str = ""  # the example corrected: it does not trigger the rule
+    fixed_text: Text = ""
     fix_safety: str = ""  # what `--fix` does about it, and whether that is safe
     refs: str = ""  # the standard's sections, beyond the family's
     per_object: bool = False
     """The rule's findings on an object's lines depend on that object alone (with the data-type definitions,
     the sections that are no object's and the options), and its other findings on no object: after an edit
     of one object, its findings elsewhere stand (runner.py reuses them) and a check of that object finds the rest."""
+
+    @cached_property
+    def example(self) -> str:
+        """A fragment of an EDS that triggers the rule (see `exampleset`)."""
+        return _made(self.example_text)
+
+    @cached_property
+    def fixed(self) -> str:
+        """The example corrected: it does not trigger the rule."""
+        return _made(self.fixed_text)
+
+
+def _made(text: Text) -> str:
+    return (text if isinstance(text, str) else text()).strip()
 
 
 RULES: dict[str, Rule] = {}
@@ -131,9 +151,9 @@ def rule(
     severity: Severity,
     summary: str,
     description: str,
-    example: str = "",
+    example: Text = "",
     *,
-    fixed: str = "",
+    fixed: Text = "",
     fix_safety: str = "",
     refs: str = "",
     per_object: bool = False,
@@ -145,7 +165,7 @@ def rule(
 
     def register(check: Check) -> Check:
         family = check.__module__.rsplit(".", 1)[-1]
-        _add(Rule(code, severity, summary, description.strip(), example.strip(), family, check, fixed.strip(),
+        _add(Rule(code, severity, summary, description.strip(), example, family, check, fixed,
                   fix_safety.strip(), refs.strip(), per_object))  # fmt: skip
         return check
 
@@ -157,15 +177,15 @@ def declare(
     severity: Severity,
     summary: str,
     description: str,
-    example: str = "",
+    example: Text = "",
     family: str = "reader",
     *,
-    fixed: str = "",
+    fixed: Text = "",
     fix_safety: str = "",
     refs: str = "",
 ) -> None:
     """Document a code that the reader reports, so `rules` lists it and `--select` knows it."""
-    _add(Rule(code, severity, summary, description.strip(), example.strip(), family, None, fixed.strip(),
+    _add(Rule(code, severity, summary, description.strip(), example, family, None, fixed,
               fix_safety.strip(), refs.strip()))  # fmt: skip
 
 

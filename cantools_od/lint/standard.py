@@ -138,7 +138,7 @@ device has none, or misses the entries.
 Error: the object cannot be read the way the standard says. An ARRAY written where the standard
 has a RECORD (or the reverse) lays out the same entries: that is STD002.""",
     "[1018]\nParameterName=Identity\nObjectType=0x7\nDataType=0x0007\nAccessType=ro",
-    fixed=ex.identity(),
+    fixed=lambda: ex.identity(),
     fix_safety="No automatic fix: the object must be described again.",
 )
 def object_type(ctx: Context) -> Iterator[Finding]:
@@ -164,8 +164,8 @@ build their API from the object type (python-canopen's ODArray/ODRecord, CANopen
 offer another interface than for the standard object.
 
 Warning: nothing is read wrong; the description differs from the standard's.""",
-    ex.identity().replace("ObjectType=0x9", "ObjectType=0x8", 1),
-    fixed=ex.identity(),
+    lambda: ex.identity().replace("ObjectType=0x9", "ObjectType=0x8", 1),
+    fixed=lambda: ex.identity(),
     fix_safety="No automatic fix (changing ObjectType changes generated code).",
 )
 def array_or_record(ctx: Context) -> Iterator[Finding]:

@@ -220,12 +220,11 @@ Generated PDO code packs and unpacks each mapped entry at its bit offset, so gen
 cannot lay out: a mapped object that does not exist or has no fixed-size type, an entry length
 that differs from the type's size, a mapping count above 64, or more bits than the frame holds
 (64, or 512 with --can-fd). Nothing is written; lint explains each case (PDO040-PDO046).""",
-    "; file: drive.eds\n" + ex.pdo("tx", "0x60410010") + "; $ cantools-od gen drive.eds -t c -o out",
+    lambda: "; file: drive.eds\n" + ex.pdo("tx", "0x60410010") + "; $ cantools-od gen drive.eds -t c -o out",
     family="gen",
-    fixed="; file: drive.eds\n"
-    + ex.pdo("tx", "0x60410010")
-    + ex.STATUSWORD
-    + "; $ cantools-od gen drive.eds -t c -o out",
+    fixed=lambda: (
+        "; file: drive.eds\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD + "; $ cantools-od gen drive.eds -t c -o out"
+    ),
     fix_safety="No automatic fix: `--keep-going` leaves the PDO out of the generated code instead.",
 )
 declare(

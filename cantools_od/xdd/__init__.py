@@ -14,6 +14,9 @@ if TYPE_CHECKING:
 # Codes after which no model of the file exists: not XML, hostile XML, too large, not CiA 311.
 REFUSED_CODES = ("XDD001", "XDD002", "XDD003", "XDD004")
 
+RAW_PREFIX = "XDD."
+"""Names of the sections that keep XML-only parts of a device read from XML (they have no place in an EDS)."""
+
 
 def refused(device: Device) -> bool:
     """Whether the reader refused the file: nothing read from it may replace it or stand for it."""

@@ -11,7 +11,7 @@ EDS export leaves them out; the CANopenNode storage group travels as
 from __future__ import annotations
 
 from ..model import Device
-from .reader import RAW_PREFIX
+from . import RAW_PREFIX  # not from the reader: writing an EDS needs no XML parser
 
 _LINE = 255
 

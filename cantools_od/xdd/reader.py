@@ -13,6 +13,7 @@ from typing import Any
 from ..eds.keys import MAX_DIGITS, is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
+from . import RAW_PREFIX as RAW_PREFIX
 from . import REFUSED_CODES as REFUSED_CODES
 from . import compact_marks, file_comments  # where writers and tests have always found them
 from . import refused as refused
@@ -21,8 +22,6 @@ from .fragments import fragment, one_line
 from .objects import ObjectReader
 from .safe import Element, XmlRefused, parse, utf8_form
 from .vocabulary import KNOWN_ELEMENTS, NAMESPACES, XSI, standard_header
-
-RAW_PREFIX = "XDD."
 
 _FILE_ATTRIBUTES = {
     "fileName": ("file_name", "FileName"),

@@ -10,7 +10,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import canopen
 from peermatrix import Dcfchk, canopen_od, canopen_reading, differences, quiet
+from sharedcache import cached_for_file
 
 from cantools_od.api import dumps, format_for, load
 from cantools_od.lint import LintOptions, lint
@@ -44,6 +46,11 @@ def _model(device: Device) -> dict[tuple[int, int, str], Any]:
 
 
 def _info(path: Path) -> dict[str, Any] | None:
+    """python-canopen's [DeviceInfo] and 1018h of the file; made once a run for the same bytes."""
+    return cached_for_file("python-canopen-info", path, (canopen.__version__,), lambda: _read_info(path))
+
+
+def _read_info(path: Path) -> dict[str, Any] | None:
     od = canopen_od(path)
     if isinstance(od, str):
         return None

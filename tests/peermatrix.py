@@ -11,6 +11,7 @@ bit pattern, read with `int(text, 0)`), its `$NODEID` formulas `$NODEID+n`.
 from __future__ import annotations
 
 import contextlib
+import importlib.metadata
 import io
 import logging
 import math
@@ -22,7 +23,9 @@ from pathlib import Path
 from typing import Any
 
 import canopen
+from sharedcache import cached_for_file
 
+_DCF_TOOLS = importlib.metadata.version("dcf-tools")
 FIELDS = ("name", "data_type", "access_type", "default", "min", "max", "pdo_mappable", "value")
 
 Reading = dict[tuple[int, int], dict[str, Any]]
@@ -66,7 +69,13 @@ def canopen_objects(od: Any) -> Iterator[tuple[int, Any, dict[int, Any] | None]]
 
 
 def canopen_reading(path: Path, node_id: int | None) -> Reading | str:
-    """python-canopen's reading of `path`, or the reason it could not read it."""
+    """python-canopen's reading of `path`, or the reason it could not read it; made once a run for the same bytes
+    (several modules judge the same corpus files and the same outputs)."""
+    parts = (canopen.__version__, repr(node_id))
+    return cached_for_file("python-canopen", path, parts, lambda: _canopen_reading(path, node_id))
+
+
+def _canopen_reading(path: Path, node_id: int | None) -> Reading | str:
     od = canopen_od(path, node_id)
     if isinstance(od, str):
         return od
@@ -112,17 +121,23 @@ def differences(before: Reading, after: Reading, fields: tuple[str, ...] = ("kin
 
 class Dcfchk:
     """lely's dcfchk on one file, as its command line runs it (`dcfchk [-n ID] FILE`): the lint, then the device
-    built for the node-ID. The lint, by far its slowest stage, runs once for any number of node-IDs."""
+    built for the node-ID. The lint, by far its slowest stage, runs once for any number of node-IDs, and each
+    verdict once a run for the same bytes (several modules judge the same corpus files and the same outputs)."""
 
     def __init__(self, path: Path) -> None:
+        self.path = path
+        self._parsed = False
+        self.cfg: Any = None
+        self.rejected: str | None = None
+
+    def _parse(self) -> None:
         from dcf.lint import lint
         from dcf.parse import parse_file
 
-        self.cfg: Any = None
-        self.rejected: str | None = None
+        self._parsed = True
         try:
             with _caught() as caught:
-                self.cfg = parse_file(os.fspath(path))
+                self.cfg = parse_file(os.fspath(self.path))
                 if not lint(self.cfg):
                     self.rejected = caught[0] if caught else "rejected"
         except Exception as error:  # a crash is a rejection, as its exit status says
@@ -130,8 +145,13 @@ class Dcfchk:
 
     def verdict(self, node_id: int | None = None) -> str | None:
         """None when dcfchk accepts the file, else why not."""
+        return cached_for_file("dcfchk", self.path, (_DCF_TOOLS, repr(node_id)), lambda: self._verdict(node_id))
+
+    def _verdict(self, node_id: int | None) -> str | None:
         from dcf.device import Device
 
+        if not self._parsed:
+            self._parse()
         if self.rejected is not None:
             return self.rejected
         try:

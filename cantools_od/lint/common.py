@@ -51,10 +51,7 @@ def explicit_vars(device: Device) -> Iterator[tuple[Object, int | None, Variable
 
 def checked_vars(ctx: Context) -> list[tuple[Object, int | None, Variable]]:
     """`explicit_vars` of the device under check, walked once for all the rules that ask."""
-    walked: list[tuple[Object, int | None, Variable]] | None = ctx.memo.get("explicit_vars")
-    if walked is None:
-        walked = ctx.memo["explicit_vars"] = list(explicit_vars(ctx.device))
-    return walked
+    return ctx.once("explicit_vars", lambda: list(explicit_vars(ctx.device)))
 
 
 def where(obj: Object, subindex: int | None) -> str:

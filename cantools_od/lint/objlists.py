@@ -42,10 +42,7 @@ def listings(device: Device) -> Iterator[tuple[str, ObjectList, int, int]]:
 
 def _listings(ctx: Context) -> list[tuple[str, ObjectList, int, int]]:
     """`listings` of the device under check, sorted once for all the rules that ask."""
-    found: list[tuple[str, ObjectList, int, int]] | None = ctx.memo.get("listings")
-    if found is None:
-        found = ctx.memo["listings"] = list(listings(ctx.device))
-    return found
+    return ctx.once("listings", lambda: list(listings(ctx.device)))
 
 
 def listed_indices(device: Device) -> set[int]:

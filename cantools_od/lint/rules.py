@@ -10,12 +10,14 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
+from typing import Any, TypeVar
 
 from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
 from ..model.canopennode import StackConfig
 from ..model.cia301.pdo import frame_bits
 from ..model.source import location
+
+_T = TypeVar("_T")
 
 
 @dataclass(frozen=True)
@@ -63,6 +65,13 @@ class Context:
         self.options = options
         self.memo: dict[str, Any] = {}
         """What several rules derive from the device alike (walks of its entries), made once per check."""
+
+    def once(self, key: str, make: Callable[[], _T]) -> _T:
+        """`make()`, made once per check for every rule that asks under `key`."""
+        if key not in self.memo:
+            self.memo[key] = make()
+        found: _T = self.memo[key]
+        return found
 
     def report(self, code: str, message: str, location: Location, fix: Fix | None = None) -> Finding:
         """A finding of rule `code`, with the rule's severity."""

@@ -76,10 +76,7 @@ def standard_objects(device: Device) -> Iterator[tuple[Object, Definition]]:
 
 def _standard(ctx: Context) -> list[tuple[Object, Definition]]:
     """`standard_objects` of the device under check, found once for all the rules that ask."""
-    found: list[tuple[Object, Definition]] | None = ctx.memo.get("standard_objects")
-    if found is None:
-        found = ctx.memo["standard_objects"] = list(standard_objects(ctx.device))
-    return found
+    return ctx.once("standard_objects", lambda: list(standard_objects(ctx.device)))
 
 
 def same_layout(obj: Object, found: Definition) -> bool:

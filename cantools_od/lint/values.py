@@ -73,10 +73,7 @@ def entries(ctx: Context) -> list[Entry]:
     """Every entry whose values are its own, once: a CompactSubObj object stands for the subs it copies into.
 
     Walked once per check, for all the rules that ask."""
-    walked: list[Entry] | None = ctx.memo.get("value_entries")
-    if walked is None:
-        walked = ctx.memo["value_entries"] = list(_walk(ctx))
-    return walked
+    return ctx.once("value_entries", lambda: list(_walk(ctx)))
 
 
 def _walk(ctx: Context) -> Iterator[Entry]:

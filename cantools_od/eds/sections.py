@@ -28,6 +28,10 @@ class _Empty(dict[str, Any]):
 
 NONE: dict[str, Any] = _Empty()
 _VALUE, _STR = Kind.VALUE, Kind.STR
+# Sections with more keys than this are lists (object lists, module lists, names): each is written once, so a
+# plan or a shared layout for it would never be used again, yet the reader would hold it, as large as the
+# section, until the whole file is read. Objects have about ten keys.
+_SHARED_KEYS_MAX = 64
 
 
 class Collected:
@@ -91,7 +95,7 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
     collected = Collected(origin)
     if section.comments:
         collected.comments[""] = section.comments
-    if section.plain is not None:
+    if section.plain is not None and len(section.entries) <= _SHARED_KEYS_MAX:
         plan_key = (id(table), section.plain[0])
         plan = report.plans.get(plan_key, False)
         if plan is False:
@@ -130,7 +134,8 @@ def collect(section: IniSection, table: dict[str, KeySpec], report: Report) -> C
             _convert_into(collected, field, key, value, kind, report, line, value_col)
     # Sections written by one tool share few layouts: one dict each saves a dict of tuples per section.
     # Set in the reader's own instance directly: pydantic's __setattr__ costs more than the rest of a line.
-    origin.__dict__["layout"] = report.layouts.setdefault(tuple(layout.items()), layout)
+    shared = len(layout) <= _SHARED_KEYS_MAX
+    origin.__dict__["layout"] = report.layouts.setdefault(tuple(layout.items()), layout) if shared else layout
     if spelled:
         origin.__dict__["spelled"] = spelled
     return collected

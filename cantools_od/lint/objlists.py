@@ -47,10 +47,11 @@ def _listings(ctx: Context) -> list[tuple[str, ObjectList, int, int]]:
 
 def listed_indices(device: Device) -> set[int]:
     """Every listed index, also those a repeated position hides (EDS015 renumbers them)."""
-    listed = {index for _, _, _, index in listings(device)}
+    listed: set[int] = set()
     for name in LISTS:
         found = object_list(device, name)
         if found is not None:
+            listed.update(found.entries.values())
             listed.update(index for entries in found.repeats.values() for _, _, index in entries)
     return listed
 
@@ -426,7 +427,7 @@ def numbering(ctx: Context) -> Iterator[Finding]:
             continue
         yield from _repeats(ctx, name, found)
         positions = sorted(found.entries)
-        gaps = sorted(set(range(1, max(positions, default=0) + 1)) - set(positions))
+        gaps = list(_missing(positions))
         gaps = gaps[sum(len(entries) - 1 for entries in found.repeats.values()) :]  # filled by the repeats
         if gaps:
             moved = tuple(_entry_line(found, p) for p in positions if p > gaps[0])
@@ -437,6 +438,15 @@ def numbering(ctx: Context) -> Iterator[Finding]:
             if keys.normalize(key) != "supportedobjects" and not _reported(key):
                 message = f"[{name}] {key}: not a list position (1, 2, ... in decimal)"
                 yield ctx.report("EDS015", message, ctx.at(found, key))
+
+
+def _missing(positions: list[int]) -> Iterator[int]:
+    """The numbers from 1 to the last of `positions` (sorted, distinct) that are not in it, in order; without a set
+    of every number, which for a long list would be the largest thing a check of the file holds."""
+    last = 0
+    for position in positions:
+        yield from range(last + 1, position)
+        last = position
 
 
 def _entry_line(found: ObjectList, position: int) -> int:

@@ -64,14 +64,21 @@ class Context:
         self.device = device
         self.options = options
         self.memo: dict[str, Any] = {}
-        """What several rules derive from the device alike (walks of its entries), made once per check."""
+        """What several rules of a family derive from the device alike (walks of its entries), made once for the
+        family (see `forget`)."""
 
     def once(self, key: str, make: Callable[[], _T]) -> _T:
-        """`make()`, made once per check for every rule that asks under `key`."""
+        """`make()`, made once for every rule of a family that asks under `key`."""
         if key not in self.memo:
             self.memo[key] = make()
         found: _T = self.memo[key]
         return found
+
+    def forget(self) -> None:
+        """Drop what `once` made: the runner calls this between rule families. A walk holds an item per entry
+        of the device, so keeping every family's walks at once was the peak memory of checking a large file;
+        making one again for a later family costs a walk, not a rule's work."""
+        self.memo.clear()
 
     def report(self, code: str, message: str, location: Location, fix: Fix | None = None) -> Finding:
         """A finding of rule `code`, with the rule's severity."""

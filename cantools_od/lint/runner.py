@@ -74,7 +74,11 @@ def linted(
     if since is not None and since[0].options == options and since[0].selection == selection:
         reuse = (since[0], since[1], Context(_view(device, since[1].index), options))
     per_object: dict[str, list[Finding]] = {}
+    family = ""
     for rule in _enabled(device, selection):
+        if rule.family != family:
+            family = rule.family
+            context.forget()
         found, ok = _per_object(rule, context, selection, reuse) if rule.per_object else _run(rule, context, selection)
         if rule.per_object and ok:
             per_object[rule.code] = found

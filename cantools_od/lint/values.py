@@ -42,18 +42,22 @@ class Entry:
     Made once per check (`entries`) and dropped with it, so it is a plain slotted class and its label
     is made only for a message."""
 
-    __slots__ = ("dtype", "implicit", "limits", "owner", "subindex", "var")
+    __slots__ = ("dtype", "owner", "subindex", "var")  # one per entry of the device: `implicit`, `limits` derived
 
-    def __init__(
-        self, owner: Object, subindex: int | None, var: Variable, limits: Variable, dtype: DataType | None
-    ) -> None:
+    def __init__(self, owner: Object, subindex: int | None, var: Variable, dtype: DataType | None) -> None:
         self.owner = owner
         self.subindex = subindex  # None for the object itself
         self.var = var
-        self.limits = limits
         self.dtype = dtype
-        # A CompactSubObj sub-object: only its [xxxxValue] value is its own.
-        self.implicit = isinstance(var, SubObject) and var.implicit
+
+    @property
+    def implicit(self) -> bool:
+        """A CompactSubObj sub-object: only its [xxxxValue] value is its own."""
+        return isinstance(self.var, SubObject) and self.var.implicit
+
+    @property
+    def limits(self) -> Variable:
+        return self.owner if self.implicit else self.var
 
     @property
     def label(self) -> str:
@@ -84,14 +88,12 @@ def _walk(ctx: Context) -> Iterator[Entry]:
             continue  # CompactPDO: made up from the standard, not from the file
         compound = obj.kind in _COMPOUND
         if not compound or obj.compact_sub_obj:
-            yield Entry(obj, None, obj, obj, entry_type(obj, obj))
+            yield Entry(obj, None, obj, entry_type(obj, obj))
         if not compound:
             continue
         for subindex, sub in obj.subs.items():
-            if not sub.implicit:
-                yield Entry(obj, subindex, sub, sub, entry_type(sub, obj))
-            elif subindex != 0:
-                yield Entry(obj, subindex, sub, obj, entry_type(sub, obj))
+            if not sub.implicit or subindex != 0:
+                yield Entry(obj, subindex, sub, entry_type(sub, obj))
 
 
 def _at(ctx: Context, entry: Entry, key: str) -> Location:

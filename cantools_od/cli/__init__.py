@@ -3,7 +3,6 @@ imported only when it runs, so that `--version` starts quickly."""
 
 from __future__ import annotations
 
-import gc
 import importlib
 import sys
 from collections.abc import Sequence
@@ -11,7 +10,7 @@ from typing import Any
 
 import click
 
-from .. import __version__
+from .. import __version__, collector
 
 # command name → (module, help line)
 COMMANDS = {
@@ -40,20 +39,14 @@ class _StartUp:
 
     @classmethod
     def pause(cls) -> None:
-        if gc.isenabled():
-            gc.disable()
-            cls.paused = True
+        cls.paused = collector.pause()
 
     @classmethod
     def end(cls) -> None:
-        """Collect again; what start-up made goes to the oldest generation at once (see eds/reader.py)."""
-        if not cls.paused:
-            return
-        cls.paused = False
-        if not gc.get_freeze_count():
-            gc.freeze()
-            gc.unfreeze()
-        gc.enable()
+        """Collect again; what start-up made goes to the oldest generation at once."""
+        if cls.paused:
+            cls.paused = False
+            collector.resume()
 
 
 class LazyGroup(click.Group):

@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-import gc
 import re
-from collections.abc import Iterable, Iterator
-from contextlib import contextmanager
+from collections.abc import Iterable
 from typing import Any
 
+from ..collector import paused
 from ..model import (
     Comments,
     Commissioning,
@@ -46,26 +45,8 @@ _OBJECT_DEFAULTS = field_defaults(Object)
 STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group comment: a scan spares a walk
 
 
-@contextmanager
-def _no_cyclic_gc() -> Iterator[None]:
-    """The model is acyclic; collector passes over its many small objects only cost time."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            # Every object made meanwhile still counts as young: the first allocation after `enable` would
-            # walk them all. Freezing and unfreezing moves them to the oldest generation without a walk (not
-            # when the program froze objects of its own: unfreezing would release those too).
-            if not gc.get_freeze_count():
-                gc.freeze()
-                gc.unfreeze()
-            gc.enable()
-
-
 def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: bool | None = None) -> Device:
-    with _no_cyclic_gc():
+    with paused():  # the model is acyclic: collector passes over its many small objects only cost time
         repeated = ini.repeated_section_names(data)
         try:
             report = Report(file)

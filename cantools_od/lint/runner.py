@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
+from ..collector import paused
 from ..model import Device, Severity
 from ..model.cia301.objects import DATA_TYPE_AREA
 from ..xdd import refused
@@ -74,18 +75,28 @@ def linted(
     if since is not None and since[0].options == options and since[0].selection == selection:
         reuse = (since[0], since[1], Context(_view(device, since[1].index), options))
     per_object: dict[str, list[Finding]] = {}
+    with paused():  # the walks are acyclic; a full collector pass over a large device took a fifth of its check
+        for rule, found, ok in _checked(device, selection, context, reuse):
+            if rule.per_object and ok:
+                per_object[rule.code] = found
+            findings.extend(found)
+    suppressions = Suppressions(device)
+    kept = [f for f in findings if not suppressions.silenced(f.code, f.location.line)]
+    return Linted(sorted(set(kept), key=_sort_key), per_object, options, selection)
+
+
+def _checked(
+    device: Device, selection: Selection, context: Context, reuse: tuple[Linted, Edit, Context] | None
+) -> Iterator[tuple[Rule, list[Finding], bool]]:
+    """Each enabled rule with its findings and whether it ran to its end; a family's shared walks are dropped
+    when the next family starts (`Context.forget`)."""
     family = ""
     for rule in _enabled(device, selection):
         if rule.family != family:
             family = rule.family
             context.forget()
         found, ok = _per_object(rule, context, selection, reuse) if rule.per_object else _run(rule, context, selection)
-        if rule.per_object and ok:
-            per_object[rule.code] = found
-        findings.extend(found)
-    suppressions = Suppressions(device)
-    kept = [f for f in findings if not suppressions.silenced(f.code, f.location.line)]
-    return Linted(sorted(set(kept), key=_sort_key), per_object, options, selection)
+        yield rule, found, ok
 
 
 def _enabled(device: Device, selection: Selection) -> Iterator[Rule]:

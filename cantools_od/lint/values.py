@@ -39,7 +39,7 @@ _ALL_NODE_IDS = tuple(range(1, 128))
 class Entry:
     """One entry with values: `limits` is where its limits come from (the object, for CompactSubObj subs).
 
-    Made once per check (`entries`) and dropped with it, so it is a plain slotted class and its label
+    Made once for the values family (`entries`) and dropped with it, so it is a plain slotted class and its label
     is made only for a message."""
 
     __slots__ = ("dtype", "owner", "subindex", "var")  # one per entry of the device: `implicit`, `limits` derived
@@ -76,7 +76,7 @@ class Entry:
 def entries(ctx: Context) -> list[Entry]:
     """Every entry whose values are its own, once: a CompactSubObj object stands for the subs it copies into.
 
-    Walked once per check, for all the rules that ask."""
+    Walked once for the rules of this family that ask (`Context.forget` drops it after them)."""
     return ctx.once("value_entries", lambda: list(_walk(ctx)))
 
 

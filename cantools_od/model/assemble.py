@@ -6,6 +6,7 @@ spend longer filling in defaults than the whole parse of a line takes.
 
 from __future__ import annotations
 
+from copy import copy
 from functools import cache
 from typing import Any, TypeVar
 
@@ -66,6 +67,21 @@ def construct(cls: type[M], values: dict[str, Any]) -> M:
         if name not in values:
             values[name] = factory()
     return assemble(cls, values, defaults)
+
+
+def fresh(cls: type[M], values: dict[str, Any]) -> M:
+    """`construct`, with a new copy of each mutable default (a dict, list or set) the values do not give, as a
+    validating constructor makes: for instances edited in place after they are made (the XDD reader's).
+    Validation costs more than the rest of making an object of an XML element."""
+    for name, default in _mutable_defaults(cls):
+        if name not in values:
+            values[name] = copy(default)
+    return construct(cls, values)
+
+
+@cache
+def _mutable_defaults(cls: type[BaseModel]) -> tuple[tuple[str, Any], ...]:
+    return tuple((name, value) for name, value in field_defaults(cls).items() if isinstance(value, dict | list | set))
 
 
 @cache

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from ..eds.report import Report
 from ..model import Origin
+from ..model.assemble import fresh
 from .locations import Positions, attribute_spans
 from .safe import Element
 
@@ -36,7 +37,7 @@ class ReadContext:
 
     def origin(self, element: Element) -> Origin:
         line, column = self.positions.at(element.start)
-        origin = Origin(file=self.file, line=line, column=column)
+        origin = fresh(Origin, {"file": self.file, "line": line, "column": column})
         self.elements[id(origin)] = element
         return origin
 

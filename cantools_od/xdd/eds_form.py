@@ -10,7 +10,9 @@ EDS export leaves them out; the CANopenNode storage group travels as
 
 from __future__ import annotations
 
-from ..model import Device
+from typing import TypeVar
+
+from ..model import Device, Object, Section
 from . import RAW_PREFIX  # not from the reader: writing an EDS needs no XML parser
 
 _LINE = 255
@@ -23,12 +25,44 @@ def _eds_key(key: str, text: str) -> bool:
 
 
 def eds_form(device: Device) -> Device:
-    """A copy of an XML-read device without what an EDS cannot hold; other devices as they are."""
+    """A copy of an XML-read device without what an EDS cannot hold; other devices as they are.
+
+    Only the parts that lose a key are copied (shallowly); the rest is shared with `device`, which is left as
+    it was. A deep copy of a large XDD cost more than reading it."""
     if device.file_format != "xdd":
         return device
-    copy = device.model_copy(deep=True)
-    copy.other_sections = [s for s in copy.other_sections if not s.name.startswith(RAW_PREFIX)]
-    for section in copy.sections():
-        if section.extra:
-            section.extra = {k: v for k, v in section.extra.items() if _eds_key(k, v)}
-    return copy
+    update: dict[str, object] = {
+        name: _form(part) for name in _PARTS if isinstance(part := getattr(device, name), Section)
+    }
+    update["objects"] = {index: _object_form(obj) for index, obj in device.objects.items()}
+    update["module_sections"] = [_form(s) for s in device.module_sections]
+    update["other_sections"] = [_form(s) for s in device.other_sections if not s.name.startswith(RAW_PREFIX)]
+    return device.model_copy(update=update)
+
+
+# The device's single sections, besides objects and the lists of raw sections (Device.sections()).
+_PARTS = (
+    "file_info",
+    "device_info",
+    "dummy_usage",
+    "comments",
+    "commissioning",
+    "mandatory_objects",
+    "optional_objects",
+    "manufacturer_objects",
+)
+
+_S = TypeVar("_S", bound=Section)
+
+
+def _form(section: _S, **update: object) -> _S:
+    kept = {k: v for k, v in section.extra.items() if _eds_key(k, v)}
+    if len(kept) < len(section.extra):
+        update["extra"] = kept
+    return section.model_copy(update=update) if update else section
+
+
+def _object_form(obj: Object) -> Object:
+    subs = {subindex: _form(sub) for subindex, sub in obj.subs.items()}
+    changed = any(sub is not obj.subs[subindex] for subindex, sub in subs.items())
+    return _form(obj, subs=subs) if changed else _form(obj)

@@ -12,6 +12,7 @@ from bisect import bisect_right
 
 from .safe import Element
 
+_TAG_NAME = re.compile(rb"<[^\s/>]+")
 _ATTRIBUTE = re.compile(rb"""([^\s=/>"']+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 
 
@@ -36,12 +37,11 @@ class Positions:
 
 def attribute_spans(data: bytes, element: Element) -> dict[str, tuple[int, int, int]]:
     """Attribute name as written → (name offset, value start, value end) in bytes."""
-    tag = data[element.start : element.content_start]
-    first = re.match(rb"<[^\s/>]+", tag)
+    end = element.content_start
+    first = _TAG_NAME.match(data, element.start, end)
     spans: dict[str, tuple[int, int, int]] = {}
-    for match in _ATTRIBUTE.finditer(tag, first.end() if first else 0):
+    for match in _ATTRIBUTE.finditer(data, first.end() if first else element.start, end):
         group = 2 if match.group(2) is not None else 3
         name = match.group(1).decode("utf-8", "replace")
-        base = element.start
-        spans[name] = (base + match.start(1), base + match.start(group), base + match.end(group))
+        spans[name] = (match.start(1), match.start(group), match.end(group))
     return spans

@@ -25,6 +25,7 @@ from ..model import (
     ValueKind,
     Variable,
 )
+from ..model.assemble import fresh
 from .context import ReadContext
 from .fragments import fragment, one_line
 from .safe import Element
@@ -80,7 +81,7 @@ class ObjectReader:
                     element,
                 )
                 continue
-            obj = Object(index=index, subs={})
+            obj = fresh(Object, {"index": index})
             self._entry(obj, obj, element, has_subs=any(c.local == "CANopenSubObject" for c in element.children))
             for child in element.children:
                 if child.local == "CANopenSubObject":
@@ -98,7 +99,7 @@ class ObjectReader:
         if subindex in obj.subs:
             self.ctx.error("XDD008", f"sub-index {subindex:X}h of {obj.index:04X}h given again; ignored", element)
             return
-        sub = SubObject()
+        sub = fresh(SubObject, {})
         self._entry(sub, obj, element, has_subs=False)
         for child in element.children:
             self._unknown_child(sub, child)

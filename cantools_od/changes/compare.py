@@ -449,6 +449,8 @@ def _plain_fields(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 
 def _canopennode(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    if old.var.canopennode is None and new.var.canopennode is None:
+        return  # most entries of most files: nothing to compare
     empty = CanopenNodeInfo.model_construct()  # all None; no schema built at validation
     before = old.var.canopennode or empty
     after = new.var.canopennode or empty

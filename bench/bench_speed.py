@@ -16,6 +16,8 @@ Rows (the load average is printed with each, as other jobs change what wall-cloc
 - 1 MB and 16 MB synthetic `lint`: CPU, wall-clock, peak RSS and its ratio to the file size; CPU per MB after
   the start-up (`lint` of the small file), which is linear when the two agree within 20 %.
 - the corpus in one `lint` call with `--jobs 1` and with `--jobs 2`: wall-clock and the ratio of the two.
+- the revision histories (../shared/eds-history) as two folders, old and new, in one `diff` call with `--jobs 1`
+  and with `--jobs 2`.
 """
 
 from __future__ import annotations
@@ -38,6 +40,7 @@ from synthetic_eds import synthetic_eds
 
 REPO = Path(__file__).resolve().parents[1]
 SMALL = REPO / "eds" / "cia402_drive.eds"
+HISTORY = REPO.parent / "shared" / "eds-history"
 
 Row = dict[str, object]
 
@@ -104,6 +107,18 @@ def process(name: str, args: list[str], rounds: int, size: int = 0) -> Row:
     return row
 
 
+def history_folders(root: Path) -> int:
+    """root/old and root/new holding each history pair's sides by project and number; the number of pairs."""
+    pairs = sorted(p for p in HISTORY.iterdir() if p.is_dir()) if HISTORY.is_dir() else []
+    for pair in pairs:
+        project, _, number = pair.name.rpartition("__")
+        for side in pair.iterdir():
+            target = root / side.stem / project / f"{number}{side.suffix}"
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(side.read_bytes())
+    return len(pairs)
+
+
 def show(row: Row) -> str:
     return "  ".join(f"{key}={value}" for key, value in row.items() if key != "row") + f"  [{row['row']}]"
 
@@ -150,6 +165,11 @@ def main(argv: list[str] | None = None) -> int:
                 add(
                     process(f"lint corpus --jobs {jobs} ({len(names)} files)", ["lint", "--jobs", str(jobs), *names], 1)
                 )
+            releases = Path(folder) / "history"
+            pairs = history_folders(releases)
+            for jobs in (1, 2) if pairs else ():
+                diff = ["diff", "--jobs", str(jobs), str(releases / "old"), str(releases / "new")]
+                add(process(f"diff history folders --jobs {jobs} ({pairs} pairs)", diff, 1))
     if args.json:
         print(json.dumps(rows, indent=2))
     return 0

@@ -16,6 +16,7 @@ from typing import NoReturn
 import click
 
 from ..model import Device, Severity
+from .batch import jobs_option
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, node_id_option, read_device
 
 NULL_DEVICE = "/dev/null"  # git's name for the missing side of an added or deleted file
@@ -43,6 +44,7 @@ def _fail(message: str) -> NoReturn:
 @click.option("--old-pins", type=click.Path(dir_okay=False), help="Pin file for OLD; default: OLD's stem + .ids.toml.")
 @click.option("--new-pins", type=click.Path(dir_okay=False), help="Pin file for NEW; default: NEW's stem + .ids.toml.")
 @click.option("--color/--no-color", default=None, help="Colour the text report; default: when stdout is a terminal.")
+@jobs_option
 def command(
     args: tuple[str, ...],
     fmt: str,
@@ -52,13 +54,15 @@ def command(
     old_pins: str | None,
     new_pins: str | None,
     color: bool | None,
+    jobs: int | None,
 ) -> None:
     """Compare OLD and NEW (EDS, DCF, XDD, XDC or JSON, in any mix) object by object, and class each
     change as breaking (for the bus, generated code or both), compatible, value or cosmetic.
-    Differences of spelling only (radix, key case, section order) are no changes. As a git external
-    diff driver it takes git's 7 arguments."""
+    Differences of spelling only (radix, key case, section order) are no changes. Two folders: every
+    device description under either, paired by relative path; only pairs that changed are reported.
+    As a git external diff driver it takes git's 7 arguments."""
     try:
-        _run(args, fmt, fail_on, git_mode, node_id, (old_pins, new_pins), color)
+        _run(args, fmt, fail_on, git_mode, node_id, (old_pins, new_pins), color, jobs)
     except Exception as error:  # a failure of ours: one line and exit 2, never a traceback nor exit 1
         reason = " ".join(str(error).split())[:200]
         _fail(f"internal error: {type(error).__name__}{': ' + reason if reason else ''} (please report it)")
@@ -72,9 +76,12 @@ def _run(
     node_id: int | None,
     pin_files: tuple[str | None, str | None],
     color: bool | None,
+    jobs: int | None,
 ) -> None:
     from ..changes import compare
 
+    if not git_mode and len(args) == 2 and any(Path(arg).is_dir() for arg in args):
+        _folders(args, fmt, fail_on, node_id, pin_files, jobs, color)
     old_pins, new_pins = pin_files
     progress = Progress("diff")  # on a terminal: what it is doing while large files are read and compared
     progress.step("reading")
@@ -96,11 +103,29 @@ def _run(
     progress.step("comparing")
     result = compare(old.device, new.device, node_id, pins[0] or old.pins, pins[1] or new.pins)
     progress.clear()
-    click.echo(_render(result, fmt), color=color if fmt == "text" else False)
-    sys.exit(EXIT_FINDINGS if _found(result, fail_on) else EXIT_OK)
+    click.echo(render(result, fmt), color=color if fmt == "text" else False)
+    sys.exit(EXIT_FINDINGS if found_in(result, fail_on) else EXIT_OK)
 
 
-def _found(result: object, fail_on: str) -> bool:
+def _folders(
+    args: tuple[str, ...],
+    fmt: str,
+    fail_on: str,
+    node_id: int | None,
+    pin_files: tuple[str | None, str | None],
+    jobs: int | None,
+    color: bool | None,
+) -> NoReturn:
+    from .diff_folders import Options, run
+
+    if not all(Path(arg).is_dir() for arg in args):
+        _fail("give two files or two folders as OLD and NEW")
+    if any(pin_files):
+        _fail("--old-pins and --new-pins name the pin file of one file: with folders, each file's own is used")
+    run(args[0], args[1], Options(fmt, fail_on, node_id), jobs, color)
+
+
+def found_in(result: object, fail_on: str) -> bool:
     """Whether a change at or above `--fail-on` is in the result."""
     from ..changes import Breaks, DeviceDiff
 
@@ -127,7 +152,7 @@ def _text_diff(args: tuple[str, ...]) -> None:
     sys.stdout.writelines(line if line.endswith("\n") else line + "\n" for line in lines)
 
 
-def _render(result: object, fmt: str) -> str:
+def render(result: object, fmt: str) -> str:
     from ..changes import DeviceDiff, jsonout, markdown, text
 
     assert isinstance(result, DeviceDiff)
@@ -146,14 +171,21 @@ class Side:
         self.pins = pins
 
 
-def _note_errors(device: Device, name: str) -> None:
+def reading_note(device: Device, name: str) -> str:
+    """The note that reading found errors (their values are compared as written); "" when it found none."""
     errors = sum(1 for d in device.diagnostics if d.severity is Severity.ERROR)
-    if errors:
-        click.echo(
-            f"{name}: note: {errors} error{'s' if errors != 1 else ''} while reading; unreadable values are "
-            f"compared as written (see `cantools-od lint {name}`)",
-            err=True,
-        )
+    if not errors:
+        return ""
+    return (
+        f"{name}: note: {errors} error{'s' if errors != 1 else ''} while reading; unreadable values are "
+        f"compared as written (see `cantools-od lint {name}`)"
+    )
+
+
+def _note_errors(device: Device, name: str) -> None:
+    note = reading_note(device, name)
+    if note:
+        click.echo(note, err=True)
 
 
 def _pins_file(path: Path | None) -> Mapping[str, str] | None:

@@ -1,0 +1,137 @@
+"""`cantools-od diff OLD_FOLDER NEW_FOLDER`: every device description under either folder, paired by its path
+relative to the folder, compared as `diff OLD NEW` compares two files; a file on one side only is compared with
+nothing (added or removed). Pairs run in processes (`--jobs`); the reports come in path order, the same bytes
+as with `--jobs 1`, and only pairs that changed are reported, as `diff -r` shows only files that differ."""
+
+from __future__ import annotations
+
+import os
+import sys
+from dataclasses import dataclass
+from functools import partial
+from pathlib import Path
+from typing import NoReturn
+
+import click
+
+from ..model import Device
+from .batch import run_each
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
+
+# Device descriptions by file name; a JSON model is compared only when named (a folder holds other JSON files).
+FOLDER_SUFFIXES = (".eds", ".dcf", ".xdd", ".xdc", ".xpd")
+NULL_DEVICE = "/dev/null"
+
+
+@dataclass(frozen=True)
+class Options:
+    fmt: str
+    fail_on: str
+    node_id: int | None
+
+
+@dataclass(frozen=True)
+class Pair:
+    name: str  # the path relative to both folders, with "/"
+    old: str  # a file, or NULL_DEVICE when only the new folder has it
+    new: str
+
+
+@dataclass(frozen=True)
+class Outcome:
+    report: str  # the rendered report; "" when unchanged or not compared
+    found: bool  # a change at or above --fail-on
+    messages: tuple[str, ...]  # lines for stderr: notes of reading, and errors
+    failed: bool  # a side could not be read
+
+
+def device_files(folder: Path) -> dict[str, Path]:
+    """Device descriptions under `folder` by relative path (symbolic links to folders are not followed)."""
+    found: dict[str, Path] = {}
+    for top, folders, files in os.walk(folder):
+        folders.sort()
+        for name in files:
+            path = Path(top, name)
+            if path.suffix.lower() in FOLDER_SUFFIXES and path.is_file():
+                found[path.relative_to(folder).as_posix()] = path
+    return found
+
+
+def pairs(old: Path, new: Path) -> list[Pair]:
+    before, after = device_files(old), device_files(new)
+    return [
+        Pair(name, str(before.get(name, NULL_DEVICE)), str(after.get(name, NULL_DEVICE)))
+        for name in sorted(before.keys() | after.keys())
+    ]
+
+
+def run(old: str, new: str, options: Options, jobs: int | None, color: bool | None) -> NoReturn:
+    """Compare the two folders; exit 2 when a file could not be read (every other pair is still compared and
+    reported), else 1 when a change at or above --fail-on was found, else 0."""
+    found = pairs(Path(old), Path(new))
+    if not found:
+        click.echo(f"error: no device description ({', '.join(FOLDER_SUFFIXES)}) under {old} or {new}", err=True)
+        sys.exit(EXIT_USAGE)
+    outcomes = run_each(partial(compare_pair, options), found, jobs, Progress("diff", len(found)))
+    reports = [outcome.report for outcome in outcomes if outcome.report]
+    for outcome in outcomes:
+        for message in outcome.messages:
+            click.echo(message, err=True)
+    if reports:
+        text = _json_array(reports) if options.fmt == "json" else "\n".join(reports)
+        click.echo(text, color=color if options.fmt == "text" else False)
+    if any(outcome.failed for outcome in outcomes):
+        sys.exit(EXIT_USAGE)
+    sys.exit(EXIT_FINDINGS if any(outcome.found for outcome in outcomes) else EXIT_OK)
+
+
+def _json_array(reports: list[str]) -> str:
+    """The reports, each as `diff --format json` writes it, as one JSON array."""
+    indented = ["\n".join("  " + line for line in report.splitlines()) for report in reports]
+    return "[\n" + ",\n".join(indented) + "\n]"
+
+
+class _Unreadable(Exception):
+    pass
+
+
+def compare_pair(options: Options, pair: Pair) -> Outcome:
+    """One pair compared and rendered: in a process of its own under --jobs, so it reports rather than exits."""
+    from ..changes import compare
+    from .diff import found_in, render
+
+    messages: list[str] = []
+    try:
+        old, old_pins = _side(pair.old, options.node_id, messages)
+        new, new_pins = _side(pair.new, options.node_id, messages)
+    except _Unreadable as error:
+        return Outcome("", False, (*messages, str(error)), True)
+    result = compare(old, new, options.node_id, old_pins, new_pins)
+    report = "" if result.empty else render(result, options.fmt)
+    return Outcome(report, found_in(result, options.fail_on), tuple(messages), False)
+
+
+def _side(path: str, node_id: int | None, messages: list[str]) -> tuple[Device, dict[str, str] | None]:
+    from ..api import load
+    from ..identifiers import load_pins, pin_file_for
+    from ..sniff import NotADeviceDescription
+    from .diff import reading_note
+
+    if path == NULL_DEVICE:
+        return Device(source=path), None
+    try:
+        device = load(path, node_id=node_id)
+    except OSError as error:
+        raise _Unreadable(f"{path}: error: cannot read: {error.strerror or error}") from None
+    except NotADeviceDescription as error:
+        raise _Unreadable(f"{path}: error: {error} [{error.code}]") from None
+    note = reading_note(device, path)
+    if note:
+        messages.append(note)
+    pin_path = pin_file_for(path)
+    try:
+        return device, (load_pins(pin_path) if pin_path is not None else None)
+    except OSError as error:
+        raise _Unreadable(f"{pin_path}: error: cannot read: {error.strerror or error}") from None
+    except ValueError as error:
+        raise _Unreadable(f"error: {error}") from None

@@ -68,8 +68,9 @@ def side_name(source: str) -> str:
     return PurePath(source).name or source
 
 
-def render(diff: DeviceDiff) -> str:
-    old, new = side_name(diff.old), side_name(diff.new)
+def render(diff: DeviceDiff, names: tuple[str, str] | None = None) -> str:
+    """The report; `names`: the sides as the title shows them (default: `side_name` of each source)."""
+    old, new = names or (side_name(diff.old), side_name(diff.new))
     lines = [f"## Object dictionary changes: {_code(old)} → {_code(new)}", ""]
     if diff.empty:
         return "\n".join([*lines, "No changes.", ""])

@@ -152,14 +152,15 @@ def _text_diff(args: tuple[str, ...]) -> None:
     sys.stdout.writelines(line if line.endswith("\n") else line + "\n" for line in lines)
 
 
-def render(result: object, fmt: str) -> str:
+def render(result: object, fmt: str, names: tuple[str, str] | None = None) -> str:
+    """The report in a format; `names`: the sides as a Markdown title shows them (default: the files' names)."""
     from ..changes import DeviceDiff, jsonout, markdown, text
 
     assert isinstance(result, DeviceDiff)
     if fmt == "json":
         return jsonout.render(result)
     if fmt == "markdown":
-        return markdown.render(result)
+        return markdown.render(result, names)
     return text.render(result)
 
 

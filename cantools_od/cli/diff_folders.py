@@ -107,7 +107,9 @@ def compare_pair(options: Options, pair: Pair) -> Outcome:
     except _Unreadable as error:
         return Outcome("", False, (*messages, str(error)), True)
     result = compare(old, new, options.node_id, old_pins, new_pins)
-    report = "" if result.empty else render(result, options.fmt)
+    # Titles name the relative path: the files' own names may repeat in other folders (node1/device.eds).
+    names = tuple(pair.name if side != NULL_DEVICE else NULL_DEVICE for side in (pair.old, pair.new))
+    report = "" if result.empty else render(result, options.fmt, (names[0], names[1]))
     return Outcome(report, found_in(result, options.fail_on), tuple(messages), False)
 
 

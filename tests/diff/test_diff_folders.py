@@ -132,3 +132,18 @@ def test_refusals_are_one_line(tmp_path: Path, args: tuple[str, ...], message: s
     result = run("diff", *args, cwd=tmp_path)
     assert result.returncode == 2 and result.stdout == ""
     assert len(result.stderr.splitlines()) == 1 and result.stderr.startswith(message)
+
+
+def test_markdown_titles_name_the_relative_path(tmp_path: Path) -> None:
+    """Two nodes' files of one name in two folders: each title tells which (the file name alone would not)."""
+    for side in ("old", "new"):
+        for node in ("node1", "node2"):
+            (tmp_path / side / node).mkdir(parents=True)
+            text = BASE if side == "old" else drop_section(BASE, "1017" if node == "node1" else "1018")
+            (tmp_path / side / node / "device.eds").write_text(text)
+    result = run("diff", "--format", "markdown", "old", "new", cwd=tmp_path)
+    titles = [line for line in result.stdout.splitlines() if line.startswith("## ")]
+    assert titles == [
+        "## Object dictionary changes: `node1/device.eds` → `node1/device.eds`",
+        "## Object dictionary changes: `node2/device.eds` → `node2/device.eds`",
+    ]

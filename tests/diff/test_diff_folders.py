@@ -50,9 +50,14 @@ def releases(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return root
 
 
-def test_parallel_run_is_the_serial_run(releases: Path) -> None:
+@pytest.fixture(scope="module")
+def serial(releases: Path) -> subprocess.CompletedProcess[str]:
+    """The history's two folders compared one pair after the other (text), shared by the tests below."""
+    return run("diff", "--jobs", "1", "old", "new", cwd=releases)
+
+
+def test_parallel_run_is_the_serial_run(releases: Path, serial: subprocess.CompletedProcess[str]) -> None:
     before = _snapshot(releases)
-    serial = run("diff", "--jobs", "1", "old", "new", cwd=releases)
     parallel = run("diff", "--jobs", "2", "old", "new", cwd=releases)
     assert serial.returncode == 0, serial.stderr
     assert (parallel.returncode, parallel.stdout, parallel.stderr) == (0, serial.stdout, serial.stderr)
@@ -64,22 +69,21 @@ def test_parallel_run_is_the_serial_run(releases: Path) -> None:
     assert "Traceback" not in serial.stdout + serial.stderr
 
 
-def test_each_report_is_the_diff_of_its_pair(releases: Path) -> None:
-    together = run("diff", "old", "new", cwd=releases).stdout
+def test_each_report_is_the_diff_of_its_pair(releases: Path, serial: subprocess.CompletedProcess[str]) -> None:
     sides = {p.relative_to(releases / "old") for p in (releases / "old").rglob("*.*")}
     names = sorted(str(name) for name in sides if (releases / "new" / name).is_file())[:6]
     for name in names:
         alone = run("diff", f"old/{name}", f"new/{name}", cwd=releases)
         if alone.stdout.split("\n", 2)[2].startswith("0 breaking, 0 compatible, 0 value, 0 cosmetic"):
-            assert f"--- old/{name}\n" not in together  # an unchanged pair is not reported
+            assert f"--- old/{name}\n" not in serial.stdout  # an unchanged pair is not reported
         else:
-            assert alone.stdout in together
+            assert alone.stdout in serial.stdout
 
 
 def test_json_is_an_array_of_reports(releases: Path) -> None:
     import jsonschema  # a test dependency (pyproject.toml)
 
-    result = run("diff", "--format", "json", "old", "new", cwd=releases)
+    result = run("diff", "--jobs", "1", "--format", "json", "old", "new", cwd=releases)
     assert result.returncode == 0, result.stderr
     reports = json.loads(result.stdout)
     schema = json.loads((resource_dir("schemas") / "diff.schema.json").read_text())

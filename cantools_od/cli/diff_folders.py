@@ -77,9 +77,10 @@ def run(old: str, new: str, options: Options, jobs: int | None, color: bool | No
     for outcome in outcomes:
         for message in outcome.messages:
             click.echo(message, err=True)
-    if reports:
-        text = _json_array(reports) if options.fmt == "json" else "\n".join(reports)
-        click.echo(text, color=color if options.fmt == "text" else False)
+    if options.fmt == "json":
+        click.echo(_json_array(reports))  # [] when nothing changed: still one JSON document
+    elif reports:  # one blank line between reports
+        click.echo("\n\n".join(report.rstrip("\n") for report in reports), color=color)
     if any(outcome.failed for outcome in outcomes):
         sys.exit(EXIT_USAGE)
     sys.exit(EXIT_FINDINGS if any(outcome.found for outcome in outcomes) else EXIT_OK)
@@ -87,6 +88,8 @@ def run(old: str, new: str, options: Options, jobs: int | None, color: bool | No
 
 def _json_array(reports: list[str]) -> str:
     """The reports, each as `diff --format json` writes it, as one JSON array."""
+    if not reports:
+        return "[]"
     indented = ["\n".join("  " + line for line in report.splitlines()) for report in reports]
     return "[\n" + ",\n".join(indented) + "\n]"
 

@@ -31,26 +31,15 @@ def eds_form(device: Device) -> Device:
     it was. A deep copy of a large XDD cost more than reading it."""
     if device.file_format != "xdd":
         return device
+    # Every field that holds one section (file_info, comments, the object lists, ...), whichever there are.
     update: dict[str, object] = {
-        name: _form(part) for name in _PARTS if isinstance(part := getattr(device, name), Section)
+        name: _form(part) for name in type(device).model_fields if isinstance(part := getattr(device, name), Section)
     }
     update["objects"] = {index: _object_form(obj) for index, obj in device.objects.items()}
     update["module_sections"] = [_form(s) for s in device.module_sections]
     update["other_sections"] = [_form(s) for s in device.other_sections if not s.name.startswith(RAW_PREFIX)]
     return device.model_copy(update=update)
 
-
-# The device's single sections, besides objects and the lists of raw sections (Device.sections()).
-_PARTS = (
-    "file_info",
-    "device_info",
-    "dummy_usage",
-    "comments",
-    "commissioning",
-    "mandatory_objects",
-    "optional_objects",
-    "manufacturer_objects",
-)
 
 _S = TypeVar("_S", bound=Section)
 

@@ -102,6 +102,16 @@ def test_a_file_on_one_side_is_added_or_removed(tmp_path: Path) -> None:
     assert "--- /dev/null\n+++ new/sub/came.eds\n" in result.stdout
     assert "--- old/gone.eds\n+++ /dev/null\n" in result.stdout
     assert result.stdout.index("gone.eds") < result.stdout.index("came.eds")  # by relative path: gone < sub/came
+    assert "\n\n--- /dev/null\n+++ new/sub/came.eds\n" in result.stdout  # a blank line between reports
+
+
+def test_unchanged_folders_report_nothing(tmp_path: Path) -> None:
+    for side in ("old", "new"):
+        (tmp_path / side).mkdir()
+        (tmp_path / side / "device.eds").write_text(BASE)
+    text = run("diff", "--fail-on", "any", "old", "new", cwd=tmp_path)
+    assert (text.returncode, text.stdout, text.stderr) == (0, "", "")
+    assert json.loads(run("diff", "--format", "json", "old", "new", cwd=tmp_path).stdout) == []
 
 
 def test_an_unreadable_file_is_named_and_the_rest_compared(tmp_path: Path) -> None:

@@ -25,16 +25,25 @@ EXIT_USAGE = 2
 def read_device(path: str, node_id: int | None = None) -> Device:
     """Load a file; a path that cannot be read, or content that is no device description,
     exits with code 2 and one line saying why."""
+    found = device_or_reason(path, node_id)
+    if isinstance(found, str):
+        click.echo(found, err=True)
+        sys.exit(EXIT_USAGE)
+    return found
+
+
+def device_or_reason(path: str, node_id: int | None = None) -> Device | str:
+    """The file's device, or the one line saying why it cannot be read as one (for work that must not exit: a
+    worker process of a batch)."""
     from ..api import load
     from ..sniff import NotADeviceDescription
 
     try:
         return load(path, node_id=node_id)
     except OSError as error:
-        click.echo(f"{path}: error: cannot read: {error.strerror or error}", err=True)
+        return f"{path}: error: cannot read: {error.strerror or error}"
     except NotADeviceDescription as error:
-        click.echo(f"{path}: error: {error} [{error.code}]", err=True)
-    sys.exit(EXIT_USAGE)
+        return f"{path}: error: {error} [{error.code}]"
 
 
 def check_extension(path: str, role: str, allowed: Iterable[str] | None = None) -> None:

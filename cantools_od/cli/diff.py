@@ -190,16 +190,22 @@ def _note_errors(device: Device, name: str) -> None:
 
 
 def _pins_file(path: Path | None) -> Mapping[str, str] | None:
-    from ..identifiers import load_pins
-
     if path is None:
         return None
     try:
-        return load_pins(path)
-    except OSError as error:
-        _fail(f"{path}: cannot read: {error.strerror or error}")
+        return read_pins(path)
     except ValueError as error:
         _fail(str(error))
+
+
+def read_pins(path: Path) -> Mapping[str, str]:
+    """A pin file's identifiers; ValueError with the one-line reason when it cannot be read or is none."""
+    from ..identifiers import load_pins
+
+    try:
+        return load_pins(path)
+    except OSError as error:
+        raise ValueError(f"{path}: cannot read: {error.strerror or error}") from None
 
 
 def _explicit_pins(path: str | None) -> Mapping[str, str] | None:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
@@ -16,11 +17,11 @@ import click
 
 from ..model import Device
 from .batch import run_each
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, device_or_reason
+from .diff import NULL_DEVICE, found_in, read_pins, reading_note, render
 
 # Device descriptions by file name; a JSON model is compared only when named (a folder holds other JSON files).
 FOLDER_SUFFIXES = (".eds", ".dcf", ".xdd", ".xdc", ".xpd")
-NULL_DEVICE = "/dev/null"
 
 
 @dataclass(frozen=True)
@@ -101,7 +102,6 @@ class _Unreadable(Exception):
 def compare_pair(options: Options, pair: Pair) -> Outcome:
     """One pair compared and rendered: in a process of its own under --jobs, so it reports rather than exits."""
     from ..changes import compare
-    from .diff import found_in, render
 
     messages: list[str] = []
     try:
@@ -111,32 +111,29 @@ def compare_pair(options: Options, pair: Pair) -> Outcome:
         return Outcome("", False, (*messages, str(error)), True)
     result = compare(old, new, options.node_id, old_pins, new_pins)
     # Titles name the relative path: the files' own names may repeat in other folders (node1/device.eds).
-    names = tuple(pair.name if side != NULL_DEVICE else NULL_DEVICE for side in (pair.old, pair.new))
-    report = "" if result.empty else render(result, options.fmt, (names[0], names[1]))
+    titles = (_title(pair.old, pair.name), _title(pair.new, pair.name))
+    report = "" if result.empty else render(result, options.fmt, titles)
     return Outcome(report, found_in(result, options.fail_on), tuple(messages), False)
 
 
-def _side(path: str, node_id: int | None, messages: list[str]) -> tuple[Device, dict[str, str] | None]:
-    from ..api import load
-    from ..identifiers import load_pins, pin_file_for
-    from ..sniff import NotADeviceDescription
-    from .diff import reading_note
+def _title(side: str, name: str) -> str:
+    return NULL_DEVICE if side == NULL_DEVICE else name
+
+
+def _side(path: str, node_id: int | None, messages: list[str]) -> tuple[Device, Mapping[str, str] | None]:
+    """A side's device and the pin file beside it; what `diff` of one pair reads, reported rather than exiting."""
+    from ..identifiers import pin_file_for
 
     if path == NULL_DEVICE:
         return Device(source=path), None
-    try:
-        device = load(path, node_id=node_id)
-    except OSError as error:
-        raise _Unreadable(f"{path}: error: cannot read: {error.strerror or error}") from None
-    except NotADeviceDescription as error:
-        raise _Unreadable(f"{path}: error: {error} [{error.code}]") from None
+    device = device_or_reason(path, node_id)
+    if isinstance(device, str):
+        raise _Unreadable(device)
     note = reading_note(device, path)
     if note:
         messages.append(note)
     pin_path = pin_file_for(path)
     try:
-        return device, (load_pins(pin_path) if pin_path is not None else None)
-    except OSError as error:
-        raise _Unreadable(f"{pin_path}: error: cannot read: {error.strerror or error}") from None
+        return device, (read_pins(pin_path) if pin_path is not None else None)
     except ValueError as error:
         raise _Unreadable(f"error: {error}") from None

@@ -15,20 +15,18 @@ import sys
 import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_scale import command, refuse_stale, user_env
+
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_CORPUS = ROOT.parent / "shared" / "eds-corpus" / "eds"
-
-
-def command() -> list[str]:
-    script = Path(sys.executable).parent / "cantools-od"
-    return [str(script)] if script.exists() else [sys.executable, "-m", "cantools_od"]
 
 
 def wall_clock(args: list[str], runs: int) -> list[float]:
     times = []
     for _ in range(runs):
         start = time.perf_counter()
-        subprocess.run([*command(), *args], capture_output=True, check=False)
+        subprocess.run([*command(), *args], capture_output=True, check=False, env=user_env())
         times.append(time.perf_counter() - start)
     return times
 
@@ -57,6 +55,7 @@ def main() -> int:
     parser.add_argument("--runs", type=int, default=10)
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
+    refuse_stale()
     results: dict[str, object] = {}
     example = ROOT / "eds" / "cia402_drive.eds"
     results["version_ms"] = 1000 * statistics.median(wall_clock(["--version"], args.runs))
@@ -70,7 +69,8 @@ def main() -> int:
         files, findings, seconds = corpus_in_process(args.corpus)
         results.update(corpus_files=files, corpus_findings=findings, corpus_s=seconds)
         start = time.perf_counter()
-        subprocess.run([*command(), "lint", *map(str, sorted(args.corpus.iterdir()))], capture_output=True, check=False)
+        names = map(str, sorted(args.corpus.iterdir()))
+        subprocess.run([*command(), "lint", *names], capture_output=True, check=False, env=user_env())
         results["corpus_one_command_s"] = time.perf_counter() - start
     else:
         print(f"corpus not found at {args.corpus}: only the example file is measured", file=sys.stderr)

@@ -28,7 +28,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_scale import cell
+from bench_scale import cell, refuse_stale, user_env
 from bench_scale import command as cli
 from synthetic_eds import parse_size, synthetic_eds
 
@@ -42,7 +42,7 @@ Row = dict[str, object]
 def run_once(command: list[str]) -> tuple[float, int, int, float]:
     """Wall-clock seconds, peak RSS in bytes, exit status and CPU seconds (user + system) of one process."""
     start = time.perf_counter()
-    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=user_env())
     _, status, usage = os.wait4(process.pid, 0)
     cpu = usage.ru_utime + usage.ru_stime
     return time.perf_counter() - start, usage.ru_maxrss * 1024, os.waitstatus_to_exitcode(status), cpu
@@ -107,8 +107,8 @@ def size_row(size: int, corpus: list[Path], folder: Path, rounds: int) -> Row:
 
 
 def has_jobs() -> bool:
-    shown = subprocess.run([*cli(), "lint", "--help"], capture_output=True, text=True, check=False).stdout
-    return "--jobs" in shown
+    shown = subprocess.run([*cli(), "lint", "--help"], capture_output=True, text=True, check=False, env=user_env())
+    return "--jobs" in shown.stdout
 
 
 def corpus_row(corpus: list[Path], rounds: int) -> Row:
@@ -149,6 +149,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--rounds", type=int, default=3, help="runs per cell below 10 MB (default 3)")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args(argv)
+    refuse_stale()
     corpus = corpus_files(args.corpus)
     with tempfile.TemporaryDirectory(prefix="bench_sizes_") as folder:
         rows = [size_row(size, corpus, Path(folder), 1 if size >= 10_000_000 else args.rounds) for size in args.sizes]

@@ -36,6 +36,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_load import DEFAULT_CORPUS, canopen_readable, corpus_files, load_all_ours, load_all_theirs, ours_readable
 from bench_scale import command as cli
+from bench_scale import refuse_stale
 from synthetic_eds import synthetic_eds
 
 REPO = Path(__file__).resolve().parents[1]
@@ -131,6 +132,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="leave out 16 MB and the corpus lint")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args(argv)
+    refuse_stale()
     if not args.corpus.is_dir():
         print(f"{args.corpus}: no corpus folder", file=sys.stderr)
         return 2

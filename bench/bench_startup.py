@@ -25,6 +25,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_scale import command as installed
+from bench_scale import refuse_stale, user_env
 from bench_sizes import run_once
 
 SMALL = Path(__file__).resolve().parents[1] / "eds" / "cia402_drive.eds"
@@ -58,7 +59,7 @@ sys.stderr.write(f"GC {spent[0] * 1000:.1f} {passes[0]}\\n")
 
 
 def _gc_share(python: str, args: list[str], folder: Path) -> str:
-    done = subprocess.run([python, "-c", _GC_HOOK, *args], cwd=folder, capture_output=True, text=True)
+    done = subprocess.run([python, "-c", _GC_HOOK, *args], cwd=folder, capture_output=True, text=True, env=user_env())
     line = next((x for x in done.stderr.splitlines() if x.startswith("GC ")), "GC ? ?").split()
     return f"gc {line[1]} ms in {line[2]} passes"
 
@@ -69,6 +70,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--against", help="a second cantools-od executable, run alternately with this one")
     parser.add_argument("--gc", action="store_true", help="also the collector's time, in process")
     args = parser.parse_args(argv)
+    refuse_stale()
     tools = {"this": installed()} | ({"against": [args.against]} if args.against else {})
     print(f"load average before: {'/'.join(f'{x:.1f}' for x in os.getloadavg())}")
     with tempfile.TemporaryDirectory(prefix="bench_startup_") as name:

@@ -32,7 +32,9 @@ def invalid(section: Section, key: str) -> bool:
 def given(var: Variable, key: str) -> bool:
     """The object key has a non-empty value (a missing and an empty entry are the same, §1)."""
     value = getattr(var, OBJECT_FIELDS[key])
-    return (value is not None and value != "") or invalid(var, key)
+    if value is not None and value != "":
+        return True
+    return bool(var.extra) and invalid(var, key)  # `extra` is empty in nearly every section: no call
 
 
 def explicit_objects(device: Device) -> Iterator[Object]:

@@ -41,7 +41,7 @@ these access types and warns.""",
 )
 def file_access(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
-        if not _domain(ctx.device, obj, var):
+        if not (var.upload_file or var.download_file) or not _domain(ctx.device, obj, var):
             continue  # EDS051
         access = var.access.value if var.access is not None else "rw"
         for key, path, wanted in (("UploadFile", var.upload_file, "ro"), ("DownloadFile", var.download_file, "wo")):
@@ -74,7 +74,7 @@ DataType 0x000F); other entries have a value of their data type.""",
 )
 def file_domain(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
-        if _domain(ctx.device, obj, var):
+        if not (var.upload_file or var.download_file) or _domain(ctx.device, obj, var):
             continue
         for key, path in (("UploadFile", var.upload_file), ("DownloadFile", var.download_file)):
             if path:

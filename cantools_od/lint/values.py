@@ -28,36 +28,33 @@ from .rules import Context, Finding, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
-_KEYS = (("DefaultValue", "default"), ("ParameterValue", "parameter_value"),
-         ("LowLimit", "low_limit"), ("HighLimit", "high_limit"))  # fmt: skip
 _COMPOUND = (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
 _NODEID_TEXT = re.compile(r"\s*\$nodeid", re.IGNORECASE)
 _TIME_OF_DAY_MS = 86_400_000
 _ALL_NODE_IDS = tuple(range(1, 128))
+_PLAIN = (int, float)  # the types of a value that is a number as it stands (bool is no limit's type)
+_PLAIN_OR_NONE = (int, float, type(None))
 
 
 class Entry:
     """One entry with values: `limits` is where its limits come from (the object, for CompactSubObj subs).
 
-    Made once for the values family (`entries`) and dropped with it, so it is a plain slotted class and its label
-    is made only for a message."""
+    Made once for the values family (`entries`) and dropped with it, so it is a plain slotted class that works
+    out what every rule of the family asks of it once (the family asks per entry and rule, thousands of times in
+    a large file), and makes its label only for a message."""
 
-    __slots__ = ("dtype", "owner", "subindex", "var")  # one per entry of the device: `implicit`, `limits` derived
+    __slots__ = ("_values", "dtype", "high", "implicit", "limits", "low", "owner", "subindex", "var")
 
     def __init__(self, owner: Object, subindex: int | None, var: Variable, dtype: DataType | None) -> None:
         self.owner = owner
         self.subindex = subindex  # None for the object itself
         self.var = var
         self.dtype = dtype
-
-    @property
-    def implicit(self) -> bool:
-        """A CompactSubObj sub-object: only its [xxxxValue] value is its own."""
-        return isinstance(self.var, SubObject) and self.var.implicit
-
-    @property
-    def limits(self) -> Variable:
-        return self.owner if self.implicit else self.var
+        # A CompactSubObj sub-object: only its [xxxxValue] value is its own; its limits are the object's.
+        self.implicit = isinstance(var, SubObject) and var.implicit
+        self.limits: Variable = owner if self.implicit else var
+        self.low, self.high = self.limits.low_limit, self.limits.high_limit
+        self._values: tuple[tuple[str, Value], ...] | None = None
 
     @property
     def label(self) -> str:
@@ -66,11 +63,22 @@ class Entry:
             return f"[{index:04X}]"
         return f"[{index:04X}Value] {self.subindex}" if self.implicit else f"[{index:04X}sub{self.subindex:X}]"
 
-    def values(self) -> Iterator[tuple[str, Value]]:
-        for key, field in _KEYS:
-            value = getattr(self.var, field)
-            if value is not None and (not self.implicit or key == "ParameterValue"):
-                yield key, value
+    def values(self) -> tuple[tuple[str, Value], ...]:
+        """(key, value) of each value the entry states itself, in key order."""
+        if self._values is None:
+            var = self.var
+            found: list[tuple[str, Value]] = []
+            if not self.implicit and var.default is not None:
+                found.append(("DefaultValue", var.default))
+            if var.parameter_value is not None:
+                found.append(("ParameterValue", var.parameter_value))
+            if not self.implicit:
+                if var.low_limit is not None:
+                    found.append(("LowLimit", var.low_limit))
+                if var.high_limit is not None:
+                    found.append(("HighLimit", var.high_limit))
+            self._values = tuple(found)
+        return self._values
 
 
 def entries(ctx: Context) -> list[Entry]:
@@ -149,17 +157,24 @@ node-ID given). Tools truncate such values or reject the file.""",
     per_object=True,
 )
 def type_range(ctx: Context) -> Iterator[Finding]:
+    bounds: dict[int, tuple[int, int] | None] = {}  # per data type index
     for entry in entries(ctx):
         dtype = entry.dtype
         if dtype is None:
             continue
+        index = dtype.index
+        if index not in bounds:
+            bounds[index] = dtype.int_range() if dtype.is_integer else None
+        fits = bounds[index]
         for key, value in entry.values():
-            problem = _range_problem(dtype, value, relevant(ctx, value))
+            if fits is not None and type(value) is int and fits[0] <= value <= fits[1]:
+                continue  # the common case, without a call
+            problem = _range_problem(ctx, dtype, value)
             if problem:
                 yield ctx.report("EDS034", f"{entry.label} {key}: {problem}", _at(ctx, entry, key))
 
 
-def _range_problem(dtype: DataType, value: Value, nids: tuple[int, ...]) -> str | None:
+def _range_problem(ctx: Context, dtype: DataType, value: Value) -> str | None:
     if isinstance(value, TimeValue) and dtype.kind is ValueKind.TIME:
         ms_limit = _TIME_OF_DAY_MS if dtype.index == TIME_OF_DAY.index else 1 << 28
         if not (0 <= value.days <= 0xFFFF and 0 <= value.ms < ms_limit):
@@ -171,6 +186,7 @@ def _range_problem(dtype: DataType, value: Value, nids: tuple[int, ...]) -> str 
     low, high = bounds
     if isinstance(value, int) and low <= value <= high:
         return None  # the common case, without a node-ID to try
+    nids = relevant(ctx, value)
 
     def problem(nid: int) -> str | None:
         resolved = number(value, nid)
@@ -203,8 +219,7 @@ def non_numeric_limits(ctx: Context) -> Iterator[Finding]:
                 yield ctx.report("EDS036", message, ctx.at(entry.var, key))
 
 
-def _limit(entry: Entry, field: str, nid: int) -> int | float | None:
-    value = getattr(entry.limits, field)
+def _limit(value: Value | None, nid: int) -> int | float | None:
     return number(value, nid) if value is not None else None
 
 
@@ -215,14 +230,17 @@ def relevant(ctx: Context, *values: Value | None) -> tuple[int, ...]:
 
 def _inverted(ctx: Context, entry: Entry) -> bool:
     """LowLimit > HighLimit (for every node-ID, with `$NODEID` limits)."""
-    if entry.limits.low_limit is None or entry.limits.high_limit is None:
+    low_value, high_value = entry.low, entry.high
+    if low_value is None or high_value is None:
         return False
+    if type(low_value) in _PLAIN and type(high_value) in _PLAIN:  # the common case, without a node-ID to try
+        return low_value > high_value  # type: ignore[operator]
 
     def problem(nid: int) -> str | None:
-        low, high = _limit(entry, "low_limit", nid), _limit(entry, "high_limit", nid)
+        low, high = _limit(low_value, nid), _limit(high_value, nid)
         return "inverted" if low is not None and high is not None and low > high else None
 
-    return always(relevant(ctx, entry.limits.low_limit, entry.limits.high_limit), problem) is not None
+    return always(relevant(ctx, low_value, high_value), problem) is not None
 
 
 @rule(
@@ -241,9 +259,9 @@ Signed limits are compared as the numbers they denote (two's-complement hex incl
 )
 def limits_order(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
-        if entry.implicit or entry.dtype is None or not entry.dtype.is_numeric:
+        if entry.low is None or entry.high is None or entry.implicit or entry.dtype is None:
             continue
-        if _inverted(ctx, entry):
+        if entry.dtype.is_numeric and _inverted(ctx, entry):
             low, high = entry.var.low_limit, entry.var.high_limit
             low_number = number(low, 1) if low is not None else None
             hint = ""
@@ -259,20 +277,29 @@ def _shown(value: Value | None) -> str:
     return repr(value) if isinstance(value, str) else str(value)
 
 
+def _beyond(key: str, value: float, low: float | None, high: float | None, formula: str) -> str | None:
+    if low is not None and value < low:
+        return f"{key} {value}{formula} is below LowLimit {low}"
+    if high is not None and value > high:
+        return f"{key} {value}{formula} is above HighLimit {high}"
+    return None
+
+
 def _outside(ctx: Context, entry: Entry, key: str, value: Value) -> str | None:
-    if entry.limits.low_limit is None and entry.limits.high_limit is None:
+    low_value, high_value = entry.low, entry.high
+    if low_value is None and high_value is None:
         return None
     if entry.dtype is None or not entry.dtype.is_numeric or _inverted(ctx, entry):
         return None
-    nids = relevant(ctx, value, entry.limits.low_limit, entry.limits.high_limit)
+    if type(value) in _PLAIN and type(low_value) in _PLAIN_OR_NONE and type(high_value) in _PLAIN_OR_NONE:
+        return _beyond(key, value, low_value, high_value, "")  # type: ignore[arg-type]  # no node-ID to try
+    nids = relevant(ctx, value, low_value, high_value)
 
     def problem(nid: int) -> str | None:
-        resolved, low, high = number(value, nid), _limit(entry, "low_limit", nid), _limit(entry, "high_limit", nid)
-        if resolved is not None and low is not None and resolved < low:
-            return f"{key} {resolved}{_formula(value, nid, nids)} is below LowLimit {low}"
-        if resolved is not None and high is not None and resolved > high:
-            return f"{key} {resolved}{_formula(value, nid, nids)} is above HighLimit {high}"
-        return None
+        resolved = number(value, nid)
+        if resolved is None:
+            return None
+        return _beyond(key, resolved, _limit(low_value, nid), _limit(high_value, nid), _formula(value, nid, nids))
 
     return always(nids, problem)
 
@@ -293,7 +320,7 @@ value it would refuse to be written. `$NODEID` defaults are checked for node-IDs
 )
 def default_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
-        if entry.implicit or entry.var.default is None:
+        if entry.implicit or entry.var.default is None or (entry.low is None and entry.high is None):
             continue
         problem = _outside(ctx, entry, "DefaultValue", entry.var.default)
         if problem:
@@ -321,7 +348,7 @@ LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boo
 def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
         value = entry.var.parameter_value
-        if value is None:
+        if value is None or (entry.low is None and entry.high is None):
             continue
         problem = _outside(ctx, entry, "ParameterValue", value)
         if problem:

@@ -110,8 +110,10 @@ def collisions(cobs: list[Cob], ids: range | list[int]) -> Iterator[tuple[Cob, C
     for node_id in ids:
         seen: dict[tuple[bool, int], int] = {}
         for position, cob in enumerate(cobs):
-            can_id = cob.can_id(node_id)
-            if not cob.valid(node_id) or not can_id[1]:
+            value = cob.at(node_id)  # what `valid` and `can_id` tell, from one resolution: 127 node-IDs per COB-ID
+            extended = bool(value & EXTENDED)
+            can_id = (extended, value & (BASE_29BIT if extended else BASE_11BIT))
+            if value & VALID or not can_id[1]:
                 continue
             earlier = seen.setdefault(can_id, position)
             if earlier != position and (earlier, position) not in met:

@@ -39,22 +39,26 @@ _PLAIN_OR_NONE = (int, float, type(None))
 class Entry:
     """One entry with values: `limits` is where its limits come from (the object, for CompactSubObj subs).
 
-    Made once for the values family (`entries`) and dropped with it, so it is a plain slotted class that works
-    out what every rule of the family asks of it once (the family asks per entry and rule, thousands of times in
-    a large file), and makes its label only for a message."""
+    Made once for the values family (`entries`) and held until its last rule, one for every entry of the device:
+    a plain class with four slots, which keeps a large file's check within its memory bound. What the rules ask
+    of it is derived when asked, and its label only for a message."""
 
-    __slots__ = ("_values", "dtype", "high", "implicit", "limits", "low", "owner", "subindex", "var")
+    __slots__ = ("dtype", "owner", "subindex", "var")
 
     def __init__(self, owner: Object, subindex: int | None, var: Variable, dtype: DataType | None) -> None:
         self.owner = owner
         self.subindex = subindex  # None for the object itself
         self.var = var
         self.dtype = dtype
-        # A CompactSubObj sub-object: only its [xxxxValue] value is its own; its limits are the object's.
-        self.implicit = isinstance(var, SubObject) and var.implicit
-        self.limits: Variable = owner if self.implicit else var
-        self.low, self.high = self.limits.low_limit, self.limits.high_limit
-        self._values: tuple[tuple[str, Value], ...] | None = None
+
+    @property
+    def implicit(self) -> bool:
+        """A CompactSubObj sub-object: only its [xxxxValue] value is its own, its limits are the object's."""
+        return isinstance(self.var, SubObject) and self.var.implicit
+
+    @property
+    def limits(self) -> Variable:
+        return self.owner if self.implicit else self.var
 
     @property
     def label(self) -> str:
@@ -63,22 +67,20 @@ class Entry:
             return f"[{index:04X}]"
         return f"[{index:04X}Value] {self.subindex}" if self.implicit else f"[{index:04X}sub{self.subindex:X}]"
 
-    def values(self) -> tuple[tuple[str, Value], ...]:
+    def values(self) -> list[tuple[str, Value]]:
         """(key, value) of each value the entry states itself, in key order."""
-        if self._values is None:
-            var = self.var
-            found: list[tuple[str, Value]] = []
-            if not self.implicit and var.default is not None:
-                found.append(("DefaultValue", var.default))
-            if var.parameter_value is not None:
-                found.append(("ParameterValue", var.parameter_value))
-            if not self.implicit:
-                if var.low_limit is not None:
-                    found.append(("LowLimit", var.low_limit))
-                if var.high_limit is not None:
-                    found.append(("HighLimit", var.high_limit))
-            self._values = tuple(found)
-        return self._values
+        var = self.var
+        own = not self.implicit
+        found: list[tuple[str, Value]] = []
+        if own and var.default is not None:
+            found.append(("DefaultValue", var.default))
+        if var.parameter_value is not None:
+            found.append(("ParameterValue", var.parameter_value))
+        if own and var.low_limit is not None:
+            found.append(("LowLimit", var.low_limit))
+        if own and var.high_limit is not None:
+            found.append(("HighLimit", var.high_limit))
+        return found
 
 
 def entries(ctx: Context) -> list[Entry]:
@@ -230,7 +232,8 @@ def relevant(ctx: Context, *values: Value | None) -> tuple[int, ...]:
 
 def _inverted(ctx: Context, entry: Entry) -> bool:
     """LowLimit > HighLimit (for every node-ID, with `$NODEID` limits)."""
-    low_value, high_value = entry.low, entry.high
+    limits = entry.limits
+    low_value, high_value = limits.low_limit, limits.high_limit
     if low_value is None or high_value is None:
         return False
     if type(low_value) in _PLAIN and type(high_value) in _PLAIN:  # the common case, without a node-ID to try
@@ -259,7 +262,7 @@ Signed limits are compared as the numbers they denote (two's-complement hex incl
 )
 def limits_order(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
-        if entry.low is None or entry.high is None or entry.implicit or entry.dtype is None:
+        if entry.implicit or entry.var.low_limit is None or entry.var.high_limit is None or entry.dtype is None:
             continue
         if entry.dtype.is_numeric and _inverted(ctx, entry):
             low, high = entry.var.low_limit, entry.var.high_limit
@@ -286,7 +289,8 @@ def _beyond(key: str, value: float, low: float | None, high: float | None, formu
 
 
 def _outside(ctx: Context, entry: Entry, key: str, value: Value) -> str | None:
-    low_value, high_value = entry.low, entry.high
+    limits = entry.limits
+    low_value, high_value = limits.low_limit, limits.high_limit
     if low_value is None and high_value is None:
         return None
     if entry.dtype is None or not entry.dtype.is_numeric or _inverted(ctx, entry):
@@ -320,7 +324,11 @@ value it would refuse to be written. `$NODEID` defaults are checked for node-IDs
 )
 def default_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
-        if entry.implicit or entry.var.default is None or (entry.low is None and entry.high is None):
+        if (
+            entry.implicit
+            or entry.var.default is None
+            or (entry.var.low_limit is None and entry.var.high_limit is None)
+        ):
             continue
         problem = _outside(ctx, entry, "DefaultValue", entry.var.default)
         if problem:
@@ -348,7 +356,7 @@ LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boo
 def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
         value = entry.var.parameter_value
-        if value is None or (entry.low is None and entry.high is None):
+        if value is None:
             continue
         problem = _outside(ctx, entry, "ParameterValue", value)
         if problem:

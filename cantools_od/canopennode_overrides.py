@@ -106,7 +106,7 @@ def apply_overrides(device: Device, path: str | Path) -> list[str]:
         if not isinstance(table, dict):
             raise ValueError(f"{key!r}: expected a table like [2000] or [2000sub1]")
         var = _target(device, key)
-        info = var.canopennode.model_copy() if var.canopennode is not None else CanopenNodeInfo()
+        info = var.canopennode.model_copy() if var.canopennode is not None else CanopenNodeInfo.model_construct()
         for field, value in table.items():
             setattr(info, field, _value(key, field, value))
             applied.append(f"{key.upper().replace('SUB', 'sub')}: {field} = {value!r} from {Path(path).name}")

@@ -102,7 +102,7 @@ def compare(
             for obj in objects
             if any(id(c) in chosen for c in obj.changes)
         ]
-    return DeviceDiff(old=old.source, new=new.source, device=device, objects=objects, pdos=pdos)
+    return DeviceDiff.model_construct(old=old.source, new=new.source, device=device, objects=objects, pdos=pdos)
 
 
 _WHOLE = frozenset({Kind.OBJECT_ADDED, Kind.OBJECT_REMOVED, Kind.SUB_ADDED, Kind.SUB_REMOVED})

@@ -64,7 +64,7 @@ def object_diffs(sides: Sides) -> list[ObjectDiff]:
             changes = list(_object_changes(sides, old, new))
         if changes:
             named = [_named(change, old, new) for change in changes]
-            diffs.append(ObjectDiff(index=index, name=_entry_name(old, new, None), changes=named))
+            diffs.append(ObjectDiff.model_construct(index=index, name=_entry_name(old, new, None), changes=named))
     return diffs
 
 
@@ -86,7 +86,7 @@ def _shown(change: Change) -> bool:
 
 
 def _moved(before: int, new: Object) -> Change:
-    return Change(
+    return Change.model_construct(
         kind=Kind.OBJECT_MOVED,
         impact=Impact.BREAKING,
         index=new.index,
@@ -136,7 +136,9 @@ def _var_summary(device: Device, var: Variable, owner: Object) -> str:
 def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
     var = obj if subindex is None else obj.subs[subindex]
     shown = _summary(device, var, obj)
-    return Change(kind=kind, impact=Impact.COMPATIBLE, index=obj.index, subindex=subindex, new=var.name, new_text=shown)
+    return Change.model_construct(
+        kind=kind, impact=Impact.COMPATIBLE, index=obj.index, subindex=subindex, new=var.name, new_text=shown
+    )
 
 
 def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
@@ -150,7 +152,7 @@ def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> C
 def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     index = old.index
     if old.kind != new.kind:
-        yield Change(
+        yield Change.model_construct(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
             index=index,
@@ -192,7 +194,7 @@ def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     assert isinstance(old.var, SubObject) and isinstance(new.var, SubObject)
     before, after = old.var.object_type or ObjectKind.VAR, new.var.object_type or ObjectKind.VAR
     if before != after:
-        yield Change(
+        yield Change.model_construct(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
             index=old.owner.index,
@@ -221,7 +223,7 @@ def _plain(
     new: object,
     note: str = "",
 ) -> Change:
-    return Change(
+    return Change.model_construct(
         kind=kind,
         impact=impact,
         index=index,
@@ -281,7 +283,7 @@ def _as_text(
     kind: Kind, impact: Impact, index: int, subindex: int | None, field: str, old: str, new: str, note: str = ""
 ) -> Change:
     """A change of a field whose values are shown as they are (identifiers, access types, link lists)."""
-    return Change(
+    return Change.model_construct(
         kind=kind,
         impact=impact,
         index=index,
@@ -311,7 +313,7 @@ def _data_type(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     before = sides.old.entry_type(old.var, old.owner)
     after = sides.new.entry_type(new.var, new.owner)
     impact, note = data_type_impact(before, after)
-    yield Change(
+    yield Change.model_construct(
         kind=Kind.DATA_TYPE,
         impact=impact,
         index=old.owner.index,
@@ -376,7 +378,7 @@ def _value_change(
     dtype: DataType | None,
     note: str = "",
 ) -> Change:
-    return Change(
+    return Change.model_construct(
         kind=kind,
         impact=impact,
         index=old.owner.index,

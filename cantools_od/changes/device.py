@@ -56,7 +56,7 @@ def _field_change(kind: Kind, impact: Impact, field: str, old: object, new: obje
     def storable(value: object) -> bool | int | float | str | None:
         return value if value is None or isinstance(value, (bool, int, float, str)) else str(value)
 
-    return Change(
+    return Change.model_construct(
         kind=kind,
         impact=impact,
         field=field,

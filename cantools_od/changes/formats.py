@@ -84,7 +84,7 @@ def split(old_source: str, new_source: str, changes: list[Change]) -> tuple[list
             else ""
         )
         lines.append(
-            Change(
+            Change.model_construct(
                 kind=Kind.NOT_COMPARABLE,
                 impact=Impact.COSMETIC,
                 field=field,

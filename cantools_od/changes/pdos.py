@@ -31,7 +31,7 @@ def pdo_diffs(sides: Sides) -> list[PdoDiff]:
             some = after or before
             assert some is not None
             diffs.append(
-                PdoDiff(
+                PdoDiff.model_construct(
                     name=some.name,
                     direction=some.direction,
                     number=some.number,
@@ -53,10 +53,16 @@ def _layout(pdo: Pdo) -> tuple[tuple[int, int, int, int], ...]:
 
 def _changes(before: Pdo | None, after: Pdo | None, node_id: int | None) -> list[Change]:
     if before is None and after is not None:
-        return [Change(kind=Kind.PDO_ADDED, impact=Impact.COMPATIBLE, index=after.comm_index, new_text=_summary(after))]
+        return [
+            Change.model_construct(
+                kind=Kind.PDO_ADDED, impact=Impact.COMPATIBLE, index=after.comm_index, new_text=_summary(after)
+            )
+        ]
     if after is None and before is not None:
         return [
-            Change(kind=Kind.PDO_REMOVED, impact=Impact.BREAKING, index=before.comm_index, old_text=_summary(before))
+            Change.model_construct(
+                kind=Kind.PDO_REMOVED, impact=Impact.BREAKING, index=before.comm_index, old_text=_summary(before)
+            )
         ]
     assert before is not None and after is not None
     changes = []
@@ -65,7 +71,7 @@ def _changes(before: Pdo | None, after: Pdo | None, node_id: int | None) -> list
         changes.append(cob)
     if before.transmission_type != after.transmission_type:
         changes.append(
-            Change(
+            Change.model_construct(
                 kind=Kind.PDO_TRANSMISSION_TYPE,
                 impact=Impact.VALUE,
                 index=before.comm_index,
@@ -79,7 +85,7 @@ def _changes(before: Pdo | None, after: Pdo | None, node_id: int | None) -> list
         )
     if _layout(before) != _layout(after):
         changes.append(
-            Change(
+            Change.model_construct(
                 kind=Kind.PDO_LAYOUT,
                 impact=Impact.BREAKING,
                 index=before.map_index,
@@ -120,7 +126,7 @@ def _timing(sides: Sides, before: Pdo, after: Pdo) -> Iterator[Change]:
     old, new = timing(sides.old, before, sides.old_node), timing(sides.new, after, sides.new_node)
     for sub, (label, _, _) in TIMING_SUBS.items():
         if sub in old and sub in new and old[sub] != new[sub]:  # an entry on one side only is a sub-object change
-            yield Change(
+            yield Change.model_construct(
                 kind=Kind.PDO_TIMING,
                 impact=Impact.VALUE,
                 index=before.comm_index,
@@ -225,7 +231,7 @@ def _cob_id(before: Pdo, after: Pdo, node_id: int | None) -> Change | None:
         for cob in (before.cob_id, after.cob_id)
     ]
     same = resolved[0] == resolved[1] and not isinstance(resolved[0], NodeIdExpr)
-    return Change(
+    return Change.model_construct(
         kind=Kind.NODEID_FORM if same else Kind.PDO_COB_ID,
         impact=Impact.VALUE if same else Impact.BREAKING,
         index=before.comm_index,

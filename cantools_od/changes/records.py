@@ -176,12 +176,12 @@ class PdoView(BaseModel):
 
     @classmethod
     def of(cls, pdo: Pdo, timing: dict[int, int] | None = None) -> PdoView:
-        view = cls(
+        view = cls.model_construct(
             cob_id=pdo.cob_id,
             transmission_type=pdo.transmission_type,
             timing=timing or {},
             entries=[
-                PdoEntryView(
+                PdoEntryView.model_construct(
                     index=e.index,
                     subindex=e.subindex,
                     bit_offset=e.bit_offset,

@@ -177,12 +177,12 @@ def _check(task: _Task) -> _Checked:
 def _not_a_device(task: _Task, error: Exception) -> _Checked:
     """A file that is no device description: an EDS000 finding like any other (exit 2 unless ignored)."""
     from ..lint.rules import RULES, Finding
-    from ..model import Location
+    from ..model.source import location
 
     code = getattr(error, "code", "EDS000")
     if not task.selection.enabled(code, task.name):
         return _Checked()
-    finding = Finding(code, RULES[code].severity, str(error), Location(file=task.name, line=1, column=1))
+    finding = Finding(code, RULES[code].severity, str(error), location(task.name, 1, 1))
     return _Checked([finding], EXIT_USAGE)
 
 

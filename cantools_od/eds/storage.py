@@ -27,7 +27,7 @@ def read_storage_groups(device: Device) -> None:
                 continue
             group = written_group(var)
             if group:
-                info = var.canopennode or CanopenNodeInfo()
+                info = var.canopennode or CanopenNodeInfo.model_construct()
                 info.storage_group = group
                 var.canopennode = info
 

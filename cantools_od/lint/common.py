@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from ..eds import keys
 from ..model import Device, Location, Object, Section, Variable
+from ..model.source import location
 from .rules import Context
 
 OBJECT_FIELDS = {spec[0]: spec[1] for spec in keys.OBJECT_KEYS.values()}  # object key -> model field
@@ -13,7 +14,7 @@ OBJECT_FIELDS = {spec[0]: spec[1] for spec in keys.OBJECT_KEYS.values()}  # obje
 
 def file_start(ctx: Context) -> Location:
     """Line 1: where file-level findings (a missing section) are reported."""
-    return Location(file=ctx.device.source, line=1, column=1)
+    return location(ctx.device.source, 1, 1)
 
 
 def present(section: Section) -> bool:

@@ -26,7 +26,8 @@ from dataclasses import dataclass, field
 from pathlib import PurePath
 
 from ..api import loads
-from ..model import Location, Severity
+from ..model import Severity
+from ..model.source import location
 from ..sniff import NotADeviceDescription
 from .examples import framed_lines
 from .rules import Finding, LintOptions
@@ -136,7 +137,7 @@ def run_example(text: str, family: str = "", profile: str | None = None) -> Outc
         try:
             device = loads(data, source=file.name)
         except NotADeviceDescription as refused:
-            finding = Finding(refused.code, Severity.ERROR, str(refused), Location(file=file.name, line=0, column=0))
+            finding = Finding(refused.code, Severity.ERROR, str(refused), location(file.name, 0, 0))
             found.append((finding, 0))
             continue
         devices.append(device)

@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from ..eds.keys import BAUD_RATES
-from ..model import Device, Location, Object, Severity, Value
+from ..model import Device, Object, Severity, Value
 from ..model.cia301.objects import (
     IDENTITY,
     IDENTITY_PRODUCT_CODE,
@@ -18,6 +18,7 @@ from ..model.cia301.objects import (
     MANDATORY,
 )
 from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
+from ..model.source import location
 from . import examples as ex
 from .common import present
 from .rules import Context, Finding, Fix, rule
@@ -47,7 +48,7 @@ without them cannot describe a conforming device.""",
 )
 def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     listing = ctx.device.mandatory_objects
-    where = ctx.at(listing) if listing is not None else Location(file=ctx.device.source, line=1, column=1)
+    where = ctx.at(listing) if listing is not None else location(ctx.device.source, 1, 1)
     for index, name in MANDATORY.items():
         if index not in ctx.device.objects:
             yield ctx.report("EDS011", f"mandatory object {index:04X}h ({name}) is missing", where)

@@ -26,6 +26,7 @@ from ..model.cia301.connections import producers
 from ..model.cia301.objects import COB_ID_EMCY, COB_ID_SYNC
 from ..model.cia301.pdo import RX, TX, MapEntry, Pdo, pdos
 from ..model.cia301.slots import slot
+from ..model.source import location
 from . import examples as ex
 from .pdoread import with_severity
 from .rules import Context, Finding, LintOptions, rule
@@ -282,7 +283,7 @@ def lint_bus(plan: NetworkPlan) -> list[Finding]:
 
 
 def _bus_finding(file: str, line: int, message: str, severity: Severity = Severity.ERROR) -> Finding:
-    return Finding("COB011", severity, message, Location(file=file, line=line, column=1))
+    return Finding("COB011", severity, message, location(file, line, 1))
 
 
 def _bus_node_ids(plan: NetworkPlan, file: str) -> Iterator[Finding]:

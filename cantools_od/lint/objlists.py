@@ -9,6 +9,7 @@ from ..eds import keys
 from ..model import Device, Location, ObjectList, Severity
 from ..model.cia301.objects import DATA_TYPE_AREA, MANUFACTURER_AREA
 from ..model.cia301.objects import MANDATORY as MANDATORY_INDICES
+from ..model.source import location
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -172,7 +173,7 @@ def missing_list(ctx: Context) -> Iterator[Finding]:
     for name in LISTS:
         if object_list(ctx.device, name) is None:
             fix = Fix(f"add an empty [{name}]", True, _fix_missing(name))
-            where = Location(file=ctx.device.source, line=1, column=1)
+            where = location(ctx.device.source, 1, 1)
             yield ctx.report("EDS019", f"[{name}] is missing", where, fix)
 
 
@@ -462,7 +463,7 @@ def _repeats(ctx: Context, name: str, found: ObjectList) -> Iterator[Finding]:
         first = entries[0][0]
         for line, column, index in entries[1:]:
             message = f"[{name}] {position}=0x{index:04X}: number {position} already given on line {first}"
-            yield ctx.report("EDS015", message, Location(file=ctx.device.source, line=line, column=column), fix)
+            yield ctx.report("EDS015", message, location(ctx.device.source, line, column), fix)
 
 
 def _free_numbers(found: ObjectList) -> Iterator[int]:

@@ -15,7 +15,6 @@ from ..eds import keys
 from ..eds.decode import decode_as
 from ..model import (
     Dialect,
-    Location,
     NodeIdExpr,
     ObjectKind,
     Section,
@@ -26,6 +25,7 @@ from ..model import (
 from ..model.cia301.objects import DATA_TYPE_AREA
 from ..model.cia301.pdo import DUMMY_TYPES
 from ..model.datatypes import BASIC_TYPE_RANGE
+from ..model.source import location
 from .common import checked_vars, where
 from .rules import Context, Finding, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
@@ -639,4 +639,4 @@ def comments_key_case(ctx: Context) -> Iterator[Finding]:
         key = line.split("=", 1)[0].strip() if "=" in line else ""
         if _COMMENT_KEY.match(key) and not _COMMENT_SPELLING.match(key):
             message = f"[Comments] {key}: python-canopen looks it up as {key[:4].title()}{key[4:].lower()} and fails"
-            yield ctx.report("DIA021", message, Location(file=ctx.device.source, line=number, column=1))
+            yield ctx.report("DIA021", message, location(ctx.device.source, number, 1))

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from ..eds import keys
 from ..model import Device, Location, Section, Severity
+from ..model.source import location
 from .common import OBJECT_FIELDS, explicit_objects, explicit_vars, file_start, invalid, present, where
 from .rules import Context, Finding, Fix, declare, rule
 
@@ -324,7 +325,7 @@ def spellings(ctx: Context) -> Iterator[Spelling]:
                 from ..eds.preserve import canonical_section_name
 
                 header = origin.header()
-                where = Location(file=header.file, line=header.line, column=header.column + 1)
+                where = location(header.file, header.line, header.column + 1)
                 yield Spelling(written, canonical_section_name(written), where, True)
             else:
                 yield Spelling(written, canonical, origin.key(canonical), False)

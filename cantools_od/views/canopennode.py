@@ -319,7 +319,7 @@ class _Builder:
         return value
 
     def settings(self, obj: Object) -> tuple[str, str | None]:
-        info = obj.canopennode or CanopenNodeInfo()
+        info = obj.canopennode or CanopenNodeInfo.model_construct()
         where = f"{obj.index:04X}h"
         group = info.storage_group
         if not group and self.editor_project:

@@ -14,7 +14,6 @@ from __future__ import annotations
 import re
 from collections import defaultdict
 from collections.abc import Sequence
-from xml.sax.saxutils import escape, quoteattr
 
 from ..eds.format import DECIMAL_INTEGER, format_value
 from ..eds.hints import Hints
@@ -24,6 +23,7 @@ from .file_comments import comment_block
 from .fragments import restore
 from .reader import FEATURE_DEFAULTS, RAW_PREFIX
 from .vocabulary import ACCESS_NAME, EDS_PROPERTY, ELEMENT_OF_TYPE, NS_1_1, XSI, standard_header
+from .xmltext import escape, quoteattr
 
 _TEXT = {"\n": "&#10;", "\r": "&#13;"}
 _ILLEGAL = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
@@ -276,7 +276,7 @@ def _limits(out: _Out, device: Device, var: Variable, owner: Object) -> None:
 
 
 def _properties(out: _Out, var: Variable) -> None:
-    info = var.canopennode or CanopenNodeInfo()
+    info = var.canopennode or CanopenNodeInfo.model_construct()
     for name, field in _PROPERTIES:
         value = getattr(info, field)
         if value is not None:

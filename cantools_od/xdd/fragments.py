@@ -8,9 +8,8 @@ remains, so the fragment also fits an EDS key.
 
 from __future__ import annotations
 
-from xml.sax.saxutils import escape, quoteattr
-
 from .safe import Element
+from .xmltext import escape, quoteattr
 
 _TEXT_ESCAPES = {"\n": "&#10;", "\r": "&#13;", "\t": "&#9;"}
 

@@ -81,7 +81,7 @@ def read_with_context(
 ) -> tuple[Device, ReadContext]:
     """The device, and where each of its parts is written (for the preserving writer)."""
     report = Report(file)
-    device = Device(source=file, file_format="xdd")
+    device = Device.model_construct(source=file, file_format="xdd")  # validation would build the schema: slow
     device.diagnostics = report.diagnostics  # the report keeps adding to this list
     ctx = ReadContext(utf8_form(data), file, report)
     try:
@@ -201,7 +201,7 @@ class _Document:
         if element.local == "ProfileHeader" and text == standard_header(path):
             return  # the header every CANopen profile has: the writers write it again
         name = f"{RAW_PREFIX}{path}.{element.local}" if path else f"{RAW_PREFIX}{element.local}"
-        section = RawSection(name=name, entries={"xml": text}, origin=self.ctx.origin(element))
+        section = RawSection.model_construct(name=name, entries={"xml": text}, origin=self.ctx.origin(element))
         self.device.other_sections.append(section)
 
     def _file_info(self, bodies: list[Element]) -> None:
@@ -284,7 +284,7 @@ class _Document:
                 self._raw(element, path)
 
     def _dummy_usage(self, usage: Element, path: str) -> None:
-        section = self.device.dummy_usage or DummyUsage(origin=self.ctx.origin(usage))
+        section = self.device.dummy_usage or DummyUsage.model_construct(origin=self.ctx.origin(usage))
         self.device.dummy_usage = section
         assert section.origin is not None
         for element in usage.children:
@@ -368,7 +368,7 @@ class _Document:
                 continue
             fields[spec[0]] = value
             self.ctx.mark(origin, spec[1], element, attr)
-        self.device.commissioning = Commissioning(**fields, extra=extra, origin=origin)
+        self.device.commissioning = Commissioning.model_construct(**fields, extra=extra, origin=origin)
 
 
 def _typed(text: str, kind: object) -> Any:

@@ -9,8 +9,6 @@ must describe the device; other changes fall back to the canonical layout.
 
 from __future__ import annotations
 
-from xml.sax.saxutils import escape, quoteattr
-
 from ..eds.format import format_value
 from ..model import AccessType, Device, DeviceInfo, Dialect, NodeIdExpr, Object, Origin, Variable
 from .canonical import canonical_xml, pdo_mapping_text
@@ -19,6 +17,7 @@ from .locations import attribute_spans
 from .reader import read_with_context, refused
 from .safe import Element
 from .vocabulary import ACCESS_NAME, ELEMENT_OF_TYPE
+from .xmltext import escape, quoteattr
 
 _KEYS = {
     "name": ("ParameterName", "name"),

@@ -39,7 +39,7 @@ def user_env() -> dict[str, str]:
 
     These scripts are started with `PYTHONPATH=.`, and a command inheriting it would import the source tree
     instead of the installed package. Where bytecode is not written (PYTHONDONTWRITEBYTECODE, a read-only
-    checkout) that tree is compiled again on every start, which added 0.15-0.3 s to each process here: a cost no
+    checkout) that tree is compiled again on every start, which added 0.1-0.3 s to each process here: a cost no
     user of the installed command pays."""
     return {key: value for key, value in os.environ.items() if key != "PYTHONPATH"}
 

@@ -212,11 +212,17 @@ def _explicit_pins(path: str | None) -> Mapping[str, str] | None:
     return _pins_file(Path(path)) if path is not None else None
 
 
+def missing_side() -> Device:
+    """The side of an added or deleted file: an empty device named /dev/null. Made without validation, which would
+    build the device's schema first: a cost at every start of the command."""
+    return Device.model_construct(source=NULL_DEVICE)
+
+
 def _file_side(path: str, node_id: int | None, explicit_pins: str | None) -> Side:
     from ..identifiers import pin_file_for
 
     if path == NULL_DEVICE:
-        return Side(Device(source=path), None)
+        return Side(missing_side(), None)
     device = read_device(path, node_id)
     _note_errors(device, path)
     return Side(device, None if explicit_pins else _pins_file(pin_file_for(path)))

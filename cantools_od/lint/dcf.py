@@ -40,14 +40,22 @@ these access types and warns.""",
     per_object=True,
 )
 def file_access(ctx: Context) -> Iterator[Finding]:
-    for obj, subindex, var in checked_vars(ctx):
-        if not (var.upload_file or var.download_file) or not _domain(ctx.device, obj, var):
+    for obj, subindex, var, domain in _with_files(ctx):
+        if not domain:
             continue  # EDS051
         access = var.access.value if var.access is not None else "rw"
         for key, path, wanted in (("UploadFile", var.upload_file, "ro"), ("DownloadFile", var.download_file, "wo")):
             if path and access != wanted:
                 message = f"{where(obj, subindex)}: {key} with AccessType {access}; expected {wanted}"
                 yield ctx.report("EDS050", message, ctx.at(var, key))
+
+
+def _with_files(ctx: Context) -> Iterator[tuple[Object, int | None, Variable, bool]]:
+    """Each entry that names an UploadFile or DownloadFile, and whether it is a DOMAIN: the data type is looked up
+    for these few entries only."""
+    for obj, subindex, var in checked_vars(ctx):
+        if var.upload_file or var.download_file:
+            yield obj, subindex, var, _domain(ctx.device, obj, var)
 
 
 def _domain(device: Device, obj: Object, var: Variable) -> bool:
@@ -73,8 +81,8 @@ DataType 0x000F); other entries have a value of their data type.""",
     per_object=True,
 )
 def file_domain(ctx: Context) -> Iterator[Finding]:
-    for obj, subindex, var in checked_vars(ctx):
-        if not (var.upload_file or var.download_file) or _domain(ctx.device, obj, var):
+    for obj, subindex, var, domain in _with_files(ctx):
+        if domain:
             continue
         for key, path in (("UploadFile", var.upload_file), ("DownloadFile", var.download_file)):
             if path:

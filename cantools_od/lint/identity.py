@@ -18,9 +18,8 @@ from ..model.cia301.objects import (
     MANDATORY,
 )
 from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
-from ..model.source import location
 from . import examples as ex
-from .common import present
+from .common import file_start, present
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -48,7 +47,7 @@ without them cannot describe a conforming device.""",
 )
 def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     listing = ctx.device.mandatory_objects
-    where = ctx.at(listing) if listing is not None else location(ctx.device.source, 1, 1)
+    where = ctx.at(listing) if listing is not None else file_start(ctx)
     for index, name in MANDATORY.items():
         if index not in ctx.device.objects:
             yield ctx.report("EDS011", f"mandatory object {index:04X}h ({name}) is missing", where)

@@ -10,6 +10,7 @@ from ..model import Device, Location, ObjectList, Severity
 from ..model.cia301.objects import DATA_TYPE_AREA, MANUFACTURER_AREA
 from ..model.cia301.objects import MANDATORY as MANDATORY_INDICES
 from ..model.source import location
+from .common import file_start
 from .rules import Context, Finding, Fix, rule
 
 E, W = Severity.ERROR, Severity.WARNING
@@ -173,8 +174,7 @@ def missing_list(ctx: Context) -> Iterator[Finding]:
     for name in LISTS:
         if object_list(ctx.device, name) is None:
             fix = Fix(f"add an empty [{name}]", True, _fix_missing(name))
-            where = location(ctx.device.source, 1, 1)
-            yield ctx.report("EDS019", f"[{name}] is missing", where, fix)
+            yield ctx.report("EDS019", f"[{name}] is missing", file_start(ctx), fix)
 
 
 def _fix_missing(name: str) -> Callable[[Device], None]:

@@ -118,8 +118,8 @@ def node_ids(ctx: Context) -> tuple[int, ...]:
     return _ALL_NODE_IDS
 
 
-def number(value: Value, node_id: int) -> int | float | None:
-    """A value as a number to compare, `$NODEID` resolved; None when it is no number."""
+def number(value: Value | None, node_id: int) -> int | float | None:
+    """A value as a number to compare, `$NODEID` resolved; None when it is no number (or no value)."""
     if isinstance(value, NodeIdExpr):
         return value.resolve(node_id)
     if isinstance(value, (int, float)):  # bool included: BOOLEAN is 0 or 1
@@ -221,10 +221,6 @@ def non_numeric_limits(ctx: Context) -> Iterator[Finding]:
                 yield ctx.report("EDS036", message, ctx.at(entry.var, key))
 
 
-def _limit(value: Value | None, nid: int) -> int | float | None:
-    return number(value, nid) if value is not None else None
-
-
 def relevant(ctx: Context, *values: Value | None) -> tuple[int, ...]:
     """The node-IDs worth trying: one stands for all when no value is a `$NODEID` formula."""
     return node_ids(ctx) if any(isinstance(v, NodeIdExpr) for v in values) else (1,)
@@ -240,7 +236,7 @@ def _inverted(ctx: Context, entry: Entry) -> bool:
         return low_value > high_value  # type: ignore[operator]
 
     def problem(nid: int) -> str | None:
-        low, high = _limit(low_value, nid), _limit(high_value, nid)
+        low, high = number(low_value, nid), number(high_value, nid)
         return "inverted" if low is not None and high is not None and low > high else None
 
     return always(relevant(ctx, low_value, high_value), problem) is not None
@@ -266,7 +262,7 @@ def limits_order(ctx: Context) -> Iterator[Finding]:
             continue
         if entry.dtype.is_numeric and _inverted(ctx, entry):
             low, high = entry.var.low_limit, entry.var.high_limit
-            low_number = number(low, 1) if low is not None else None
+            low_number = number(low, 1)
             hint = ""
             if entry.dtype.kind is ValueKind.SIGNED and isinstance(high, int) and high < 0 <= (low_number or 0):
                 hint = " (a hex HighLimit such as 0xFF is two's complement for a signed type)"
@@ -303,7 +299,7 @@ def _outside(ctx: Context, entry: Entry, key: str, value: Value) -> str | None:
         resolved = number(value, nid)
         if resolved is None:
             return None
-        return _beyond(key, resolved, _limit(low_value, nid), _limit(high_value, nid), _formula(value, nid, nids))
+        return _beyond(key, resolved, number(low_value, nid), number(high_value, nid), _formula(value, nid, nids))
 
     return always(nids, problem)
 

@@ -217,7 +217,7 @@ class ObjectReader:
             if name not in ("uniqueID", "access") and not name.startswith("xmlns"):
                 extra[f"parameter@{name}"] = text
         type_element: Element | None = None
-        info = CanopenNodeInfo.model_construct()
+        info = fresh(CanopenNodeInfo, {})
         for child in parameter.children:
             if child.local in TYPE_ELEMENTS:
                 type_element = child

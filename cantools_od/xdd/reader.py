@@ -13,6 +13,7 @@ from typing import Any
 from ..eds.keys import MAX_DIGITS, is_decimal
 from ..eds.report import Report
 from ..model import Commissioning, Device, Dialect, DummyUsage, RawSection
+from ..model.assemble import fresh
 from . import RAW_PREFIX as RAW_PREFIX
 from . import REFUSED_CODES as REFUSED_CODES
 from . import compact_marks, file_comments  # where writers and tests have always found them
@@ -201,7 +202,7 @@ class _Document:
         if element.local == "ProfileHeader" and text == standard_header(path):
             return  # the header every CANopen profile has: the writers write it again
         name = f"{RAW_PREFIX}{path}.{element.local}" if path else f"{RAW_PREFIX}{element.local}"
-        section = RawSection.model_construct(name=name, entries={"xml": text}, origin=self.ctx.origin(element))
+        section = fresh(RawSection, {"name": name, "entries": {"xml": text}, "origin": self.ctx.origin(element)})
         self.device.other_sections.append(section)
 
     def _file_info(self, bodies: list[Element]) -> None:
@@ -284,7 +285,7 @@ class _Document:
                 self._raw(element, path)
 
     def _dummy_usage(self, usage: Element, path: str) -> None:
-        section = self.device.dummy_usage or DummyUsage.model_construct(origin=self.ctx.origin(usage))
+        section = self.device.dummy_usage or fresh(DummyUsage, {"origin": self.ctx.origin(usage)})
         self.device.dummy_usage = section
         assert section.origin is not None
         for element in usage.children:
@@ -368,7 +369,7 @@ class _Document:
                 continue
             fields[spec[0]] = value
             self.ctx.mark(origin, spec[1], element, attr)
-        self.device.commissioning = Commissioning.model_construct(**fields, extra=extra, origin=origin)
+        self.device.commissioning = fresh(Commissioning, {**fields, "extra": extra, "origin": origin})
 
 
 def _typed(text: str, kind: object) -> Any:

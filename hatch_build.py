@@ -1,7 +1,12 @@
-"""Wheel build step: the Jinja templates compiled to Python modules, so that `gen` does not compile them in
-every process (jinja2's `ModuleLoader` loads them; pip byte-compiles them at install like any module).
+"""Wheel build steps:
+- the Jinja templates compiled to Python modules, so that `gen` does not compile them in every process
+  (jinja2's `ModuleLoader` loads them; pip byte-compiles them at install like any module);
+- the EDS reader's per-line scanner (cantools_od/eds/_scan.c) compiled to an extension module by setuptools'
+  `build_ext`, which knows each platform's compiler and flags. Where it cannot be compiled (no C compiler), the
+  wheel is built without it, says so, and the reader uses the same scanner in Python (eds/ini.py).
 
-Runs in the build environment, where the package's own dependencies are absent: only jinja2 is imported.
+Runs in the build environment, where the package's own dependencies are absent: only jinja2 and setuptools are
+imported.
 The renderer uses the compiled templates only with the jinja2 version that compiled them (JINJA2_VERSION).
 The options that change how a template compiles are the renderer's (cantools_od/render/__init__.py:
 `environment()`); the golden tests of `gen` run the installed wheel, so a difference would show there.
@@ -10,6 +15,7 @@ The options that change how a template compiles are the renderer's (cantools_od/
 from __future__ import annotations
 
 import shutil
+import sys
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -30,14 +36,47 @@ class _KnownFilters(dict[str, Any]):
         return super().get(key, _plain)
 
 
-class TemplatesHook(BuildHookInterface):  # type: ignore[type-arg]
-    PLUGIN_NAME = "templates"
+EXTENSION = "cantools_od.eds._scan"
+
+
+def compile_extension(root: Path, out: Path) -> Path | None:
+    """The scanner built into `out`; None, with a line on stderr, when it cannot be compiled here."""
+    from setuptools import Distribution, Extension
+    from setuptools.errors import CCompilerError, CompileError, ExecError, LinkError, PlatformError
+
+    source = root / "cantools_od" / "eds" / "_scan.c"
+    dist = Distribution({"name": "cantools-od", "ext_modules": [Extension(EXTENSION, [str(source)])]})
+    command = dist.get_command_obj("build_ext")
+    command.build_lib = str(out / "lib")
+    command.build_temp = str(out / "temp")
+    try:
+        command.ensure_finalized()
+        command.run()
+    except (CCompilerError, CompileError, ExecError, LinkError, PlatformError) as why:
+        print(
+            f"cantools-od: the compiled EDS scanner was not built ({why}); the reader uses its Python form",
+            file=sys.stderr,
+        )
+        return None
+    return Path(command.get_ext_fullpath(EXTENSION))
+
+
+class WheelHook(BuildHookInterface):  # type: ignore[type-arg]
+    PLUGIN_NAME = "templates-and-scanner"
     _out: Path | None = None
 
     def initialize(self, version: str, build_data: dict[str, Any]) -> None:
         if self.target_name != "wheel":
             return
-        out = self._out = Path(tempfile.mkdtemp(prefix="cantools-od-templates-"))
+        out = self._out = Path(tempfile.mkdtemp(prefix="cantools-od-build-"))
+        built = compile_extension(Path(self.root), out / "scanner")
+        if built is not None:
+            build_data["force_include"][str(built)] = "cantools_od/eds/" + built.name
+            build_data["pure_python"] = False
+            build_data["infer_tag"] = True  # the extension is for this interpreter and platform
+        self._templates(out / "templates", build_data)
+
+    def _templates(self, out: Path, build_data: dict[str, Any]) -> None:
         env = jinja2.Environment(
             loader=jinja2.FileSystemLoader(str(Path(self.root) / "templates")),
             trim_blocks=True,

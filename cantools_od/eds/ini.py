@@ -8,7 +8,7 @@ is then split into comment, blank, entry and stray lines.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from itertools import islice
 from operator import itemgetter
@@ -129,34 +129,30 @@ class Stream:
         pending: list[str] = []
         line = 1  # lines end with CR, LF or CRLF
         for is_section, token, plain in self._tokens():
-            if plain:  # the faster split, where it breaks lines exactly where the reader does
-                lines = token.splitlines()
-                if token[-1] in "\r\n":
-                    lines.append("")
-            else:
-                lines = _EOL.split(token)
-            first, line = line, line + len(lines) - 1
-            if len(token) > MAX_LINE and max(map(len, lines)) > MAX_LINE:
-                self.long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
             if not is_section:
                 trailing: list[str] = []
-                _split_body(lines, first, 0, [], trailing, self.preamble_stray)
+                line, _, _ = scan(token, line, 0, [], trailing, self.preamble_stray, self.long_lines, plain)
                 pending = trailing
                 continue
-            match = _HEADER.match(lines[0])
+            entries: list[Entry] = []
+            after: list[str] = []  # comments after a section's last entry stand above the next header
+            stray: list[tuple[int, str]] = []
+            first = line
+            line, plain, header = scan(token, first, 1, entries, after, stray, self.long_lines, plain)
+            assert header is not None
+            match = _HEADER.match(header)
             assert match is not None
             section = IniSection(
                 name=match.group(2).strip(),
                 line=first,
                 column=len(match.group(1)) + 1,
+                entries=entries,
                 comments=pending,
-                header_text=lines[0],
+                stray=stray,
+                header_text=header,
                 closed=bool(match.group(3)),
             )
-            # Comments after a section's last entry stand above the next header.
-            pending = []
-            entries = section.entries
-            plain = _split_body(lines, first, 1, entries, pending, section.stray)
+            pending = after
             if plain and entries and entries[-1][2] - first == len(entries):  # on the lines after the header
                 section.plain = (tuple(map(_KEY, entries)), tuple(map(_VALUE, entries)))
             yield section
@@ -209,6 +205,36 @@ def repeated_section_names(text: str | bytes) -> set[str]:
     return repeated
 
 
+def _scan_python(
+    token: str,
+    first: int,
+    skip: int,
+    entries: list[Entry],
+    comments: list[str],
+    stray: list[tuple[int, str]],
+    long_lines: list[tuple[int, int]],
+    plain_breaks: bool,
+) -> tuple[int, bool, str | None]:
+    """Splits a token (a section's text, or the preamble) that starts on line `first` into lines, and the lines
+    after the first `skip` into entries, comments and stray lines; notes lines over MAX_LINE.
+
+    Returns the line the next token starts on, whether every entry is written plainly (see `IniSection.plain`,
+    but for where the entries stand) and the first line (the header) when `skip` is 1. `plain_breaks`: only CR
+    and LF break the token's lines, so the faster `str.splitlines` breaks them where the reader does.
+
+    The reference for the compiled `_scan.scan`, which does the same and is used when it is installed."""
+    if plain_breaks:
+        lines = token.splitlines()
+        if token[-1] in "\r\n":
+            lines.append("")
+    else:
+        lines = _EOL.split(token)
+    if len(token) > MAX_LINE and max(map(len, lines)) > MAX_LINE:
+        long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
+    plain = _split_body(lines, first, skip, entries, comments, stray)
+    return first + len(lines) - 1, plain, lines[0] if skip else None
+
+
 def _split_body(
     lines: list[str], first: int, skip: int, entries: list[Entry], comments: list[str], stray: list[tuple[int, str]]
 ) -> bool:
@@ -248,3 +274,17 @@ def _split_body(
             add(new(Entry, (bare_key, bare_value, line, indent + 1, value_col, above, True)))
             plain = False
     return plain
+
+
+Scan = Callable[
+    [str, int, int, list[Entry], list[str], list[tuple[int, str]], list[tuple[int, int]], bool],
+    tuple[int, bool, str | None],
+]
+scan: Scan
+try:
+    from . import _scan
+except ImportError:  # built without a C compiler: the same, in Python
+    scan = _scan_python
+else:
+    _scan.setup(Entry)
+    scan = _scan.scan

@@ -1,6 +1,6 @@
 """Time and peak memory of `diff` on the largest real revision pair, against one `load` of each file.
 
-    PYTHONPATH=. python bench/bench_diff.py [--rounds N] [--json] [HISTORY]
+    python bench/bench_diff.py [--rounds N] [--json] [HISTORY]
 
 HISTORY is a folder of old/new pairs (default ../shared/eds-history); the pair whose two files are largest
 together is measured. `diff` here is what the command does: read both files, compare, and render the text,
@@ -18,6 +18,9 @@ import time
 import tracemalloc
 from collections.abc import Callable
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import installed  # noqa: F401  (first: the installed package is measured, see bench/installed.py)
 
 from cantools_od import load
 from cantools_od.changes import compare, jsonout, markdown, text

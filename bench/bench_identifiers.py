@@ -1,6 +1,6 @@
 """Time identifier assignment for a large device (5,000 objects whose names collide).
 
-    PYTHONPATH=. python bench/bench_identifiers.py [--rounds N]
+    python bench/bench_identifiers.py [--rounds N]
 
 Prints the median wall-clock time of `cantools_od.identifiers.assign` over the rounds.
 """
@@ -9,7 +9,12 @@ from __future__ import annotations
 
 import argparse
 import statistics
+import sys
 import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import installed  # noqa: F401  (first: the installed package is measured, see bench/installed.py)
 
 from cantools_od.identifiers import assign
 from cantools_od.model import Device, Object, ObjectKind, SubObject

@@ -1,6 +1,6 @@
 """Load-time benchmark: cantools-od against python-canopen's `import_od`.
 
-Run with `PYTHONPATH=. python bench/bench_load.py [CORPUS_DIR] [--json] [--rounds N]`.
+Run with `python bench/bench_load.py [CORPUS_DIR] [--json] [--rounds N]`.
 See bench/README.md for what is measured.
 """
 
@@ -20,6 +20,9 @@ from pathlib import Path
 from typing import Any, Literal
 
 import canopen
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import installed  # noqa: F401  (first: the installed package is measured, see bench/installed.py)
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 

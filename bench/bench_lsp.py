@@ -1,7 +1,7 @@
 """How long `cantools-od lsp` takes to republish diagnostics after a one-line edit of a large file.
 
-    PYTHONPATH=. python bench/bench_lsp.py                     # the largest corpus file
-    PYTHONPATH=. python bench/bench_lsp.py path/to/file.eds --edits 10
+    python bench/bench_lsp.py                     # the largest corpus file
+    python bench/bench_lsp.py path/to/file.eds --edits 10
 
 A real client (pygls's) starts the server process, opens the file, waits for its diagnostics, then
 makes one-line edits (DefaultValue lines of objects spread over the file rewritten) and times each
@@ -29,6 +29,9 @@ from pathlib import Path
 
 from lsprotocol import types
 from pygls.lsp.client import LanguageClient
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import installed  # noqa: F401  (first: the installed package is measured, see bench/installed.py)
 
 from cantools_od.eds.decode import decode_as
 

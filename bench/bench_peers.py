@@ -2,7 +2,7 @@
 `lint --fix` write, against how they read the original (the corpus, then probes of REAL values written as
 bit patterns and as decimals); and how many lines `fmt` changes per radix style.
 
-Run with `PYTHONPATH=. python bench/bench_peers.py [CORPUS_DIR] [--json]`. See bench/README.md.
+Run with `python bench/bench_peers.py [CORPUS_DIR] [--json]`. See bench/README.md.
 """
 
 from __future__ import annotations
@@ -15,6 +15,9 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import installed  # noqa: F401  (first: the installed package is measured, see bench/installed.py)
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 

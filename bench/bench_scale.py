@@ -21,6 +21,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from importlib.machinery import EXTENSION_SUFFIXES
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -37,7 +38,7 @@ def command() -> list[str]:
 def user_env() -> dict[str, str]:
     """The environment a measured command runs in: this one without PYTHONPATH.
 
-    These scripts are started with `PYTHONPATH=.`, and a command inheriting it would import the source tree
+    When a script is started with `PYTHONPATH=.`, a command inheriting it would import the source tree
     instead of the installed package. Where bytecode is not written (PYTHONDONTWRITEBYTECODE, a read-only
     checkout) that tree is compiled again on every start, which added 0.1-0.3 s to each process here: a cost no
     user of the installed command pays."""
@@ -66,6 +67,9 @@ def stale_install() -> str | None:
         if not (installed / module.relative_to(SOURCE)).is_file()
         or (installed / module.relative_to(SOURCE)).read_bytes() != module.read_bytes()
     ]
+    compiled = (installed / "eds" / f"_scan{suffix}" for suffix in EXTENSION_SUFFIXES)
+    if not differ and (SOURCE / "eds" / "_scan.c").is_file() and not any(path.is_file() for path in compiled):
+        return "the installed cantools_od has no compiled EDS scanner (built without a C compiler?)"
     if not differ:
         return None
     return f"the installed cantools_od differs from the source tree in {len(differ)} modules ({differ[0]}, ...)"

@@ -1,9 +1,9 @@
 """Issue #23's figures in one run, on a machine other jobs may share: CPU-time ratios against python-canopen
 measured alternating in one process, and each command line run as a user runs it.
 
-    PYTHONPATH=. .venv/bin/python bench/bench_speed.py                  # everything (several minutes)
-    PYTHONPATH=. .venv/bin/python bench/bench_speed.py --quick          # without 16 MB and the corpus lint
-    PYTHONPATH=. .venv/bin/python bench/bench_speed.py --json
+    .venv/bin/python bench/bench_speed.py                  # everything (several minutes)
+    .venv/bin/python bench/bench_speed.py --quick          # without 16 MB and the corpus lint
+    .venv/bin/python bench/bench_speed.py --json
 
 Rows (the load average is printed with each, as other jobs change what wall-clock time means):
 

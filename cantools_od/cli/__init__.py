@@ -3,10 +3,15 @@ imported only when it runs, so that `--version` starts quickly."""
 
 from __future__ import annotations
 
+import atexit
+import contextlib
+import errno
 import importlib
+import os
 import sys
+import threading
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, NoReturn
 
 import click
 
@@ -117,3 +122,55 @@ class LazyGroup(click.Group):
 @click.version_option(__version__, "--version", prog_name="cantools-od")
 def main() -> None:
     """Read, check and generate code from CANopen object dictionaries."""
+
+
+def run() -> NoReturn:
+    """The `cantools-od` program (console script, `python -m cantools_od`): `main`, then `leave`."""
+    try:
+        main(prog_name="cantools-od")
+    except SystemExit as end:
+        code = end.code
+    except OSError as error:
+        if error.filename is not None or error.errno not in _OUTPUT_FAILED:
+            raise
+        _output_failed(error)
+    else:  # pragma: no cover - standalone click always exits
+        code = 0
+    if code is None or isinstance(code, int):
+        leave(code or 0)
+    raise SystemExit(code)
+
+
+# What writing to standard output fails with, where the commands' own files carry a file name in the error.
+_OUTPUT_FAILED = {errno.ENOSPC, errno.EPIPE, errno.EIO, errno.EFBIG, errno.EDQUOT}
+
+
+def _output_failed(error: OSError) -> NoReturn:
+    """Standard output could not be written (/dev/full, a full disk): one line, exit 2, as for any output that
+    cannot be written. A closed pipe (`| head`) is how a reader says it has read enough: no message, exit 1."""
+    if error.errno != errno.EPIPE:
+        with contextlib.suppress(OSError):  # stderr may be as full
+            print(f"cantools-od: error: cannot write standard output: {error.strerror}", file=sys.stderr, flush=True)
+    atexit._run_exitfuncs()
+    os._exit(1 if error.errno == errno.EPIPE else 2)  # what stdout still holds cannot be written either
+
+
+def leave(code: int) -> NoReturn:
+    """Ends the program as the interpreter would, but without freeing each of its objects first.
+
+    That teardown was 4 % of a `lint` (58 M of 1,466 M instructions for the Sevcon Nano EDS, 58 M of 897 M for a
+    small file) and shows nothing to anyone. Whatever else the interpreter does at exit that can be seen is done
+    here first: the atexit callbacks (with weakref finalizers) run, stdout and stderr are flushed. Every file the
+    commands write is closed before they return. Where that cannot be done so (another thread still runs, a flush
+    fails: a closed pipe), the interpreter ends the program as usual, with its own messages and exit code.
+    Never from `main`: a caller that runs it in-process (click's CliRunner, the tests) gets SystemExit."""
+    if threading.active_count() == 1:
+        atexit._run_exitfuncs()
+        try:
+            for stream in (sys.stdout, sys.stderr):
+                if stream is not None:
+                    stream.flush()
+        except (OSError, ValueError):
+            sys.exit(code)
+        os._exit(code)
+    sys.exit(code)

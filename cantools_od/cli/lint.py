@@ -6,7 +6,7 @@ import sys
 from collections import Counter
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import click
 
@@ -114,7 +114,7 @@ def _options_for(name: str, options: LintOptions, stack_files: tuple[str, ...]) 
     """The canopennode profile follows the build configuration each project declares beside its file."""
     if options.profile != "canopennode":
         return options
-    return replace(options, stack=load_stack_config(name, stack_files))
+    return options._replace(stack=load_stack_config(name, stack_files))
 
 
 def _selection(name: str, config: str | None, select: tuple[str, ...], ignore: tuple[str, ...]) -> Selection:
@@ -129,8 +129,7 @@ def _selection(name: str, config: str | None, select: tuple[str, ...], ignore: t
     return selection.merged(_codes(select), _codes(ignore))
 
 
-@dataclass(frozen=True)
-class _Task:
+class _Task(NamedTuple):
     name: str
     options: LintOptions
     selection: Selection
@@ -210,7 +209,7 @@ def _sent(finding: Finding) -> Finding:
     """The finding without its fix's function (which cannot leave the process), its message and safety kept."""
     if finding.fix is None:
         return finding
-    return replace(finding, fix=replace(finding.fix, apply=_applied))
+    return finding._replace(fix=replace(finding.fix, apply=_applied))
 
 
 def _applied(device: Device) -> None:

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import re
 import struct
-from dataclasses import dataclass
 from functools import lru_cache
+from typing import NamedTuple
 
 from ..model import NodeIdExpr, RawValue, Severity, TimeValue, Value, ValueKind
 from ..model.assemble import construct
@@ -19,8 +19,7 @@ from .keys import MAX_DIGITS
 Note = tuple[str, Severity, str]
 
 
-@dataclass(frozen=True)
-class Parsed:
+class Parsed(NamedTuple):
     value: Value | None
     notes: tuple[Note, ...] = ()
     comment: str | None = None  # an inline comment cut off the value

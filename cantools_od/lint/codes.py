@@ -13,15 +13,14 @@ line here plus its declaration in the family's module, with a failing and a fixe
 from __future__ import annotations
 
 import importlib
-from dataclasses import dataclass
 from functools import cache
+from typing import NamedTuple
 
 from ..model import Severity
 from .rules import RULES, Rule
 
 
-@dataclass(frozen=True)
-class Family:
+class Family(NamedTuple):
     module: str  # the module of cantools_od.lint that declares the family's codes
     title: str
     refs: str = ""  # the sections of the standards the family checks
@@ -269,8 +268,7 @@ NAMES: dict[str, dict[str, str]] = {
 }
 
 
-@dataclass(frozen=True)
-class Code:
+class Code(NamedTuple):
     """One registered code: its declaration (severity, summary, documentation) and its place here."""
 
     code: str

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..model import Device, Location, Severity
 from ..model.cia301.cobid import (
@@ -260,8 +260,7 @@ def _sync_producers(nodes: list[_Node]) -> Iterator[Finding]:
 # A bus description (bus.yml): the same family of checks, over the network its plan gives, at the YAML's lines.
 
 
-@dataclass(frozen=True)
-class _Sender:
+class _Sender(NamedTuple):
     who: str
     what: str
     line: int

@@ -6,7 +6,6 @@ CiA 306 §4.6.3; CiA 301 data types and index areas.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import replace
 
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable
 from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
@@ -110,7 +109,7 @@ def forbidden_keys(ctx: Context) -> Iterator[Finding]:
                 kind = "a sub-object" if subindex is not None else f"an object of type {obj.kind.name}"
                 message = f"{where(obj, subindex)}: {key} is not allowed on {kind}"
                 finding = ctx.report("EDS024", message, ctx.at(var, key))
-                yield replace(finding, severity=W) if _says_absent(var, key, subindex is not None) else finding
+                yield finding._replace(severity=W) if _says_absent(var, key, subindex is not None) else finding
 
 
 def _says_absent(var: Variable, key: str, sub: bool) -> bool:

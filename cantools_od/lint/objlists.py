@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterator
-from dataclasses import replace
 
 from ..eds import keys
 from ..model import Device, Location, ObjectList, Severity
@@ -220,7 +219,7 @@ def mandatory_list(ctx: Context) -> Iterator[Finding]:
             fix = Fix(f"move 0x{index:04X} to [{target}]", False, _fix_move(name, index, target))
             message = f"[{name}] {position}=0x{index:04X}: belongs in [{target}]"
             finding = ctx.report("EDS013", message, _entry_at(ctx, found, position), fix)
-            yield replace(finding, severity=W) if name == MANDATORY else finding
+            yield finding._replace(severity=W) if name == MANDATORY else finding
 
 
 @rule(

@@ -7,7 +7,6 @@ checks try every node-ID the device may have (`node_ids`).
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Callable, Iterator
 from weakref import WeakKeyDictionary
 
@@ -86,4 +85,4 @@ def length_fix(entry: MapEntry, bits: int) -> Fix | None:
 
 def with_severity(finding: Finding, severity: Severity) -> Finding:
     """A rule whose severity depends on the case reports its milder cases through this."""
-    return dataclasses.replace(finding, severity=severity)
+    return finding._replace(severity=severity)

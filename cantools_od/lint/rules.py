@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any, TypeVar
+from typing import Any, NamedTuple, TypeVar
 
 from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
 from ..model.canopennode import StackConfig
@@ -31,8 +31,7 @@ class Fix:
     """Lines of the file the fix rewrites or removes besides the finding's own (lines it adds are not named)."""
 
 
-@dataclass(frozen=True)
-class Finding:
+class Finding(NamedTuple):
     code: str
     severity: Severity
     message: str
@@ -43,8 +42,7 @@ class Finding:
         return f"{self.location}: {self.severity.value}: {self.message} [{self.code}]"
 
 
-@dataclass(frozen=True)
-class LintOptions:
+class LintOptions(NamedTuple):
     can_fd: bool = False
     node_id: int | None = None
     profile: str | None = None

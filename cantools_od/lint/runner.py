@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..collector import paused
 from ..model import Device, Severity
@@ -37,8 +37,7 @@ class Edit:
     delta: int
 
 
-@dataclass(frozen=True)
-class Linted:
+class Linted(NamedTuple):
     """A device's findings, with what the next check after an edit of one object may take from them: each
     per-object rule's findings (selected, not yet suppressed), for the options and selection they were found with."""
 
@@ -150,7 +149,7 @@ def moved(finding: Finding, start: int, delta: int) -> Finding:
     fix = finding.fix
     if fix is not None and fix.lines:
         fix = replace(fix, lines=tuple(line + delta if line > start else line for line in fix.lines))
-    return replace(finding, location=where.model_copy(update={"line": where.line + delta}), fix=fix)
+    return finding._replace(location=where.model_copy(update={"line": where.line + delta}), fix=fix)
 
 
 def _sort_key(finding: Finding) -> tuple[str, int, int, str, str]:

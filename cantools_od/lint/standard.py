@@ -13,7 +13,6 @@ PDO064), and sub-index 0 of every ARRAY and RECORD by EDS025; these rules leave 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import replace
 
 from ..model import Device, Object, ObjectKind, Severity, SubObject, Variable, standard_type
 from ..model.cia301 import cia402, definitions
@@ -220,7 +219,7 @@ def _vendor_entries(ctx: Context, obj: Object, found: Definition) -> Iterator[Fi
             f"{_label(obj, subindex, sub)}: sub-index {subindex} of {obj.index:04X}h {found.name} is not defined by "
             f"{found.clause} (a vendor's extension; its data type is the vendor's)"
         )
-        yield replace(ctx.report("STD003", message, ctx.at(sub)), severity=W)
+        yield ctx.report("STD003", message, ctx.at(sub))._replace(severity=W)
 
 
 def _set_type(index: int, subindex: int, wanted: int) -> Callable[[Device], None]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from ..eds import keys
 from ..model import Device, Location, Section, Severity
@@ -274,8 +274,7 @@ def _fix_comment_count(device: Device) -> None:
 # ---- spellings -------------------------------------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Spelling:
+class Spelling(NamedTuple):
     """A known key or section name written otherwise than CiA 306 spells it."""
 
     written: str

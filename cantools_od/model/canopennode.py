@@ -9,9 +9,8 @@ CANopenNode target infers what is missing (and says so).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from enum import StrEnum
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 from pydantic import BaseModel, ConfigDict
 
@@ -228,8 +227,7 @@ STACK_DEFAULTS: dict[str, int] = {
 }  # fmt: skip
 
 
-@dataclass(frozen=True)
-class StackSwitch:
+class StackSwitch(NamedTuple):
     """One function of the stack that needs an object: `flag` set in `switch` turns it on."""
 
     switch: str  # CO_CONFIG_HB_CONS
@@ -252,8 +250,7 @@ SWITCHED_COMPANIONS: dict[str, StackSwitch] = {
 }
 
 
-@dataclass(frozen=True)
-class StackConfig:
+class StackConfig(NamedTuple):
     """The build configuration a project declares: its CO_CONFIG_* values (the rest keep the stack's defaults).
 
     `declared` is False when the project said nothing: whether a switched function is on is then unknown.

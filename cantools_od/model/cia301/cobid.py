@@ -4,7 +4,7 @@ restricted CAN-IDs, and a COB-ID entry read from its configured value."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from ..device import Device
 from ..source import Location
@@ -34,8 +34,7 @@ def restricted(can_id: int) -> bool:
     return any(low <= can_id <= high for low, high in RESTRICTED)
 
 
-@dataclass(frozen=True)
-class Cob:
+class Cob(NamedTuple):
     """A COB-ID entry: its slot (None for the implicit NMT error-control COB-ID) and its value."""
 
     slot: Slot | None

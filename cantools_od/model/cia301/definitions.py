@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import Enum
+from typing import NamedTuple
 
 from ..datatypes import INDEX_BY_NAME, standard_type
 from ..objects import AccessType, ObjectKind
@@ -62,8 +63,7 @@ class Mapping(Enum):
     must be mappable, into RPDOs when the master writes it, into TPDOs when the device reports it."""
 
 
-@dataclass(frozen=True)
-class Entry:
+class Entry(NamedTuple):
     """One sub-index (sub-index 0 of a VAR) as the standard defines it."""
 
     name: str

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Protocol
+from typing import NamedTuple, Protocol
 
 from ..device import Device
 from ..objects import Object, Section, SubObject, Variable
@@ -25,8 +24,7 @@ def as_int(value: object) -> int | None:
     return value if isinstance(value, int) and not isinstance(value, bool) else None
 
 
-@dataclass(frozen=True)
-class Slot:
+class Slot(NamedTuple):
     """One value-carrying entry: an object's sub-index (or a VAR) and where its value is written."""
 
     owner: Object

@@ -88,6 +88,12 @@ def test_compiled_scanner_refuses_wrong_arguments_with_an_exception() -> None:
         scan("[A]\n", 1)
 
 
+@pytest.mark.parametrize("scan", [compiled, lambda: ini._scan_python], ids=["compiled", "python"])
+def test_a_section_must_start_with_its_header(scan: Callable[[], Callable[..., Any]]) -> None:
+    with pytest.raises(ValueError, match="starts with its header line"):
+        scan()("Key=1\n[A]\n", 1, 1, [], [], [], [], True)
+
+
 @pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc is not installed")
 def test_scanner_source_compiles_without_warnings(tmp_path: Path) -> None:
     include = sysconfig.get_paths()["include"]

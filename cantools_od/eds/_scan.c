@@ -126,6 +126,59 @@ static int body_line(Text *t, Py_ssize_t start, Py_ssize_t end, Py_ssize_t line,
     return append_new(body->entries, entry);
 }
 
+/* The header line [start, end) read as ini._HEADER does: (name stripped, column of "[", closed, the line). */
+static PyObject *read_header(Text *t, Py_ssize_t start, Py_ssize_t end) {
+    Py_ssize_t bracket = start;
+    while (bracket < end && BLANK(AT(t, bracket)))
+        bracket++;
+    if (bracket == end || AT(t, bracket) != '[') {
+        PyErr_SetString(PyExc_ValueError, "a section's text starts with its header line");
+        return NULL;
+    }
+    Py_ssize_t close = bracket + 1;
+    while (close < end && AT(t, close) != ']')
+        close++;
+    PyObject *between = PyUnicode_Substring(t->text, bracket + 1, close);
+    if (!between)
+        return NULL;
+    PyObject *name = PyObject_CallMethod(between, "strip", NULL); /* str.strip: every kind of blank */
+    Py_DECREF(between);
+    if (!name)
+        return NULL;
+    PyObject *line = PyUnicode_Substring(t->text, start, end);
+    if (!line) {
+        Py_DECREF(name);
+        return NULL;
+    }
+    return Py_BuildValue("(NnON)", name, bracket - start + 1, close < end ? Py_True : Py_False, line);
+}
+
+/* (keys, values) of the section's entries when all are written plainly on the lines right after the header,
+ * else None (IniSection.plain). */
+static PyObject *plain_keys(PyObject *entries, Py_ssize_t first, int plain) {
+    Py_ssize_t count = PyList_GET_SIZE(entries);
+    if (!plain || !count)
+        Py_RETURN_NONE;
+    PyObject *last_line = PyTuple_GET_ITEM(PyList_GET_ITEM(entries, count - 1), 2);
+    Py_ssize_t last = PyLong_AsSsize_t(last_line);
+    if (last == -1 && PyErr_Occurred())
+        return NULL;
+    if (last - first != count)
+        Py_RETURN_NONE;
+    PyObject *keys = PyTuple_New(count), *values = PyTuple_New(count);
+    if (!keys || !values) {
+        Py_XDECREF(keys);
+        Py_XDECREF(values);
+        return NULL;
+    }
+    for (Py_ssize_t i = 0; i < count; i++) {
+        PyObject *entry = PyList_GET_ITEM(entries, i);
+        PyTuple_SET_ITEM(keys, i, Py_NewRef(PyTuple_GET_ITEM(entry, 0)));
+        PyTuple_SET_ITEM(values, i, Py_NewRef(PyTuple_GET_ITEM(entry, 1)));
+    }
+    return Py_BuildValue("(NN)", keys, values);
+}
+
 PyDoc_STRVAR(scan_doc, "scan(token, first, skip, entries, comments, stray, long_lines, hint) -> (line, plain, header)\n\n"
                        "See ini._scan_python, which this does exactly; `hint` is unused here.");
 
@@ -157,11 +210,8 @@ static PyObject *scan(PyObject *Py_UNUSED(self), PyObject *args) {
         if (end - start > MAX_LINE && append_pair(long_lines, line, PyLong_FromSsize_t(end - start)) < 0)
             goto failed;
         if (index < skip) {
-            if (index == 0) {
-                header = PyUnicode_Substring(token, start, end);
-                if (!header)
-                    goto failed;
-            }
+            if (index == 0 && !(header = read_header(&t, start, end)))
+                goto failed;
         } else if (body_line(&t, start, end, line, &body) < 0) {
             goto failed;
         }
@@ -169,11 +219,12 @@ static PyObject *scan(PyObject *Py_UNUSED(self), PyObject *args) {
         if (!more)
             break;
     }
-    if (!header) {
-        header = Py_None;
-        Py_INCREF(header);
-    }
-    return Py_BuildValue("(nON)", first + index - 1, body.plain ? Py_True : Py_False, header);
+    if (!header)
+        return Py_BuildValue("(nOO)", first + index - 1, Py_None, Py_None);
+    PyObject *plain = plain_keys(body.entries, first, body.plain);
+    if (!plain)
+        goto failed;
+    return Py_BuildValue("(nNN)", first + index - 1, plain, header);
 failed:
     Py_XDECREF(header);
     return NULL;

@@ -128,48 +128,35 @@ class Stream:
     def __iter__(self) -> Iterator[IniSection]:
         pending: list[str] = []
         line = 1  # lines end with CR, LF or CRLF
-        for is_section, token, plain in self._tokens():
+        for is_section, token, plain_breaks in self._tokens():
             if not is_section:
                 trailing: list[str] = []
-                line, _, _ = scan(token, line, 0, [], trailing, self.preamble_stray, self.long_lines, plain)
+                line, _, _ = scan(token, line, 0, [], trailing, self.preamble_stray, self.long_lines, plain_breaks)
                 pending = trailing
                 continue
             entries: list[Entry] = []
             after: list[str] = []  # comments after a section's last entry stand above the next header
             stray: list[tuple[int, str]] = []
             first = line
-            line, plain, header = scan(token, first, 1, entries, after, stray, self.long_lines, plain)
+            line, plain, header = scan(token, first, 1, entries, after, stray, self.long_lines, plain_breaks)
             assert header is not None
-            match = _HEADER.match(header)
-            assert match is not None
-            section = IniSection(
-                name=match.group(2).strip(),
-                line=first,
-                column=len(match.group(1)) + 1,
-                entries=entries,
-                comments=pending,
-                stray=stray,
-                header_text=header,
-                closed=bool(match.group(3)),
-            )
+            name, column, closed, text = header
+            yield IniSection(name, first, column, entries, pending, [], stray, text, closed, plain)
             pending = after
-            if plain and entries and entries[-1][2] - first == len(entries):  # on the lines after the header
-                section.plain = (tuple(map(_KEY, entries)), tuple(map(_VALUE, entries)))
-            yield section
         self.trailing = pending
 
     def _tokens(self) -> Iterator[tuple[bool, str, bool]]:
         """(is a section, its text with its line ends, whether only CR and LF break its lines) in file order;
-        the preamble is no section."""
+        the preamble is no section. Only the Python scanner asks the last: the compiled one is told True."""
         for piece in self.pieces:
-            plain = _OTHER_BREAKS.search(piece) is None
+            plain_breaks = scan is not _scan_python or _OTHER_BREAKS.search(piece) is None
             start, is_section = 0, False  # what begins at `start`
             for header in _header_starts(piece):
                 if header > start:
-                    yield is_section, piece[start:header], plain
+                    yield is_section, piece[start:header], plain_breaks
                 start, is_section = header, True
             if start < len(piece):
-                yield is_section, piece[start:], plain
+                yield is_section, piece[start:], plain_breaks
 
 
 _NAMES_AFTER_LF = re.compile(rb"\n[ \t]*\[([^\]\r\n]*)")
@@ -205,6 +192,12 @@ def repeated_section_names(text: str | bytes) -> set[str]:
     return repeated
 
 
+Plain = tuple[tuple[str, ...], tuple[str, ...]]
+Header = tuple[str, int, bool, str]
+"""A header line read: the name between the brackets (blanks removed), the column of "[", whether "]" closes it,
+and the line as written."""
+
+
 def _scan_python(
     token: str,
     first: int,
@@ -214,13 +207,13 @@ def _scan_python(
     stray: list[tuple[int, str]],
     long_lines: list[tuple[int, int]],
     plain_breaks: bool,
-) -> tuple[int, bool, str | None]:
+) -> tuple[int, Plain | None, Header | None]:
     """Splits a token (a section's text, or the preamble) that starts on line `first` into lines, and the lines
     after the first `skip` into entries, comments and stray lines; notes lines over MAX_LINE.
 
-    Returns the line the next token starts on, whether every entry is written plainly (see `IniSection.plain`,
-    but for where the entries stand) and the first line (the header) when `skip` is 1. `plain_breaks`: only CR
-    and LF break the token's lines, so the faster `str.splitlines` breaks them where the reader does.
+    Returns the line the next token starts on; when `skip` is 1 (a section), what `IniSection.plain` holds and
+    the header. `plain_breaks`: only CR and LF break the token's lines, so the faster `str.splitlines` breaks them
+    where the reader does.
 
     The reference for the compiled `_scan.scan`, which does the same and is used when it is installed."""
     if plain_breaks:
@@ -232,7 +225,16 @@ def _scan_python(
     if len(token) > MAX_LINE and max(map(len, lines)) > MAX_LINE:
         long_lines.extend((first + n, len(text)) for n, text in enumerate(lines) if len(text) > MAX_LINE)
     plain = _split_body(lines, first, skip, entries, comments, stray)
-    return first + len(lines) - 1, plain, lines[0] if skip else None
+    if not skip:
+        return first + len(lines) - 1, None, None
+    match = _HEADER.match(lines[0])
+    if match is None:
+        raise ValueError("a section's text starts with its header line")
+    header = (match.group(2).strip(), len(match.group(1)) + 1, bool(match.group(3)), lines[0])
+    keys = None
+    if plain and entries and entries[-1][2] - first == len(entries):  # on the lines after the header
+        keys = (tuple(map(_KEY, entries)), tuple(map(_VALUE, entries)))
+    return first + len(lines) - 1, keys, header
 
 
 def _split_body(
@@ -278,7 +280,7 @@ def _split_body(
 
 Scan = Callable[
     [str, int, int, list[Entry], list[str], list[tuple[int, str]], list[tuple[int, int]], bool],
-    tuple[int, bool, str | None],
+    tuple[int, Plain | None, Header | None],
 ]
 scan: Scan
 try:

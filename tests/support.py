@@ -9,7 +9,16 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "eds"
-CORPUS = ROOT.parent / "shared" / "eds-corpus" / "eds"
+SHARED = ROOT.parent / "shared"
+CORPUS = SHARED / "eds-corpus" / "eds"
+
+
+def shared_files(suffixes: tuple[str, ...]) -> list[Path]:
+    """Every file anywhere in ../shared (corpus, both sides of the history pairs, third_party) whose suffix, in
+    lower case, is one of `suffixes`; [] when ../shared is absent."""
+    if not SHARED.is_dir():
+        return []
+    return sorted(p for p in SHARED.rglob("*") if p.suffix.lower() in suffixes and p.is_file())
 
 
 def corpus_files() -> list[Path]:

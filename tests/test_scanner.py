@@ -18,18 +18,12 @@ from hypothesis import strategies as st
 from cantools_od.eds import ini
 from cantools_od.eds.decode import decode
 
-from support import CORPUS, EXAMPLES, ROOT
-
-HISTORY = ROOT.parent / "shared" / "eds-history"
-THIRD_PARTY = ROOT.parent / "shared" / "third_party"
+from support import EXAMPLES, ROOT, shared_files
 
 
 def _real_files() -> list[Path]:
-    found = [*EXAMPLES.iterdir(), *CORPUS.glob("*")] if CORPUS.is_dir() else list(EXAMPLES.iterdir())
-    for folder in (HISTORY, THIRD_PARTY):
-        if folder.is_dir():
-            found += folder.rglob("*")
-    return sorted(p for p in found if p.is_file() and p.suffix.lower() in (".eds", ".dcf"))
+    suffixes = (".eds", ".dcf")
+    return sorted(p for p in EXAMPLES.iterdir() if p.suffix.lower() in suffixes) + shared_files(suffixes)
 
 
 def _read(text: str, scan: Callable[..., Any], monkeypatch: pytest.MonkeyPatch) -> tuple[object, ...]:

@@ -8,9 +8,8 @@ from pathlib import Path
 import canopen
 import pytest
 
-from support import ROOT, file_params
+from support import SHARED, file_params, shared_files
 
-SHARED = ROOT.parent / "shared"
 XDD_CORPUS = SHARED / "eds-corpus" / "xdd"
 DEMO = SHARED / "third_party" / "CANopenDemo-demo"
 CANOPENNODE_EXAMPLE = SHARED / "third_party" / "CANopenNode" / "example"
@@ -29,9 +28,7 @@ def xdd_params() -> list[object]:
 
 def shared_xml_files() -> list[Path]:
     """Every XDD/XDC/XPD anywhere in ../shared: corpus, both sides of the history pairs, third_party."""
-    if not SHARED.is_dir():
-        return []
-    return sorted(p for p in SHARED.rglob("*") if p.suffix.lower() in (".xdd", ".xdc", ".xpd") and p.is_file())
+    return shared_files((".xdd", ".xdc", ".xpd"))
 
 
 def shared_xml_params() -> list[object]:

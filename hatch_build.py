@@ -1,9 +1,11 @@
 """Wheel build steps:
 - the Jinja templates compiled to Python modules, so that `gen` does not compile them in every process
   (jinja2's `ModuleLoader` loads them; pip byte-compiles them at install like any module);
-- the EDS reader's per-line scanner (cantools_od/eds/_scan.c) compiled to an extension module by setuptools'
-  `build_ext`, which knows each platform's compiler and flags. Where it cannot be compiled (no C compiler), the
-  wheel is built without it, says so, and the reader uses the same scanner in Python (eds/ini.py).
+- the readers' compiled parts, each an extension module built by setuptools' `build_ext`, which knows each
+  platform's compiler and flags: the EDS reader's per-line scanner (cantools_od/eds/_scan.c) and the XML reader's
+  per-element byte work (cantools_od/xdd/_tags.c). Where they cannot be compiled (no C compiler), the wheel is
+  built without them, says so, and the readers use the same code in Python (eds/ini.py, xdd/safe.py and
+  xdd/locations.py).
 
 Runs in the build environment, where the package's own dependencies are absent: only jinja2 and setuptools are
 imported.
@@ -36,16 +38,17 @@ class _KnownFilters(dict[str, Any]):
         return super().get(key, _plain)
 
 
-EXTENSION = "cantools_od.eds._scan"
+EXTENSIONS = ("cantools_od.eds._scan", "cantools_od.xdd._tags")
+"""Module names; each is built from the C file of the same path."""
 
 
-def compile_extension(root: Path, out: Path) -> Path | None:
-    """The scanner built into `out`; None, with a line on stderr, when it cannot be compiled here."""
+def compile_extensions(root: Path, out: Path) -> list[Path] | None:
+    """The extension modules built into `out`; None, with a line on stderr, when they cannot be compiled here."""
     from setuptools import Distribution, Extension
     from setuptools.errors import CCompilerError, CompileError, ExecError, LinkError, PlatformError
 
-    source = root / "cantools_od" / "eds" / "_scan.c"
-    dist = Distribution({"name": "cantools-od", "ext_modules": [Extension(EXTENSION, [str(source)])]})
+    modules = [Extension(name, [str(root.joinpath(*name.split(".")).with_suffix(".c"))]) for name in EXTENSIONS]
+    dist = Distribution({"name": "cantools-od", "ext_modules": modules})
     command = dist.get_command_obj("build_ext")
     command.build_lib = str(out / "lib")
     command.build_temp = str(out / "temp")
@@ -54,24 +57,26 @@ def compile_extension(root: Path, out: Path) -> Path | None:
         command.run()
     except (CCompilerError, CompileError, ExecError, LinkError, PlatformError) as why:
         print(
-            f"cantools-od: the compiled EDS scanner was not built ({why}); the reader uses its Python form",
+            f"cantools-od: the readers' compiled parts were not built ({why}); the readers use their Python form",
             file=sys.stderr,
         )
         return None
-    return Path(command.get_ext_fullpath(EXTENSION))
+    return [Path(command.get_ext_fullpath(name)) for name in EXTENSIONS]
 
 
 class WheelHook(BuildHookInterface):  # type: ignore[type-arg]
-    PLUGIN_NAME = "templates-and-scanner"
+    PLUGIN_NAME = "templates-and-extensions"
     _out: Path | None = None
 
     def initialize(self, version: str, build_data: dict[str, Any]) -> None:
         if self.target_name != "wheel":
             return
         out = self._out = Path(tempfile.mkdtemp(prefix="cantools-od-build-"))
-        built = compile_extension(Path(self.root), out / "scanner")
+        built = compile_extensions(Path(self.root), out / "extensions")
         if built is not None:
-            build_data["force_include"][str(built)] = "cantools_od/eds/" + built.name
+            for name, path in zip(EXTENSIONS, built, strict=True):
+                folder = "/".join(name.split(".")[:-1])
+                build_data["force_include"][str(path)] = f"{folder}/{path.name}"
             build_data["pure_python"] = False
             build_data["infer_tag"] = True  # the extension is for this interpreter and platform
         self._templates(out / "templates", build_data)

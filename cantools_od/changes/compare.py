@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from operator import attrgetter
 
 from ..eds.storage import PREFIX as STORAGE_PREFIX
 from ..identifiers import Identifiers
@@ -22,7 +23,7 @@ from ..model import (
 )
 from . import describe
 from .impact import access_impact, canopennode_impact, data_type_impact, flag_impact, limit_impact, value_impact
-from .records import Change, Impact, Kind, ObjectDiff
+from .records import Change, Impact, Kind, ObjectDiff, new_change, renamed
 
 
 @dataclass(frozen=True)
@@ -86,7 +87,7 @@ def _shown(change: Change) -> bool:
 
 
 def _moved(before: int, new: Object) -> Change:
-    return Change.model_construct(
+    return new_change(
         kind=Kind.OBJECT_MOVED,
         impact=Impact.BREAKING,
         index=new.index,
@@ -108,7 +109,7 @@ def _entry_name(old: Object | None, new: Object | None, subindex: int | None) ->
 
 
 def _named(change: Change, old: Object | None, new: Object | None) -> Change:
-    return change.model_copy(update={"name": _entry_name(old, new, change.subindex)})
+    return renamed(change, name=_entry_name(old, new, change.subindex))
 
 
 def _summary(device: Device, var: Variable, owner: Object) -> str:
@@ -136,7 +137,7 @@ def _var_summary(device: Device, var: Variable, owner: Object) -> str:
 def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
     var = obj if subindex is None else obj.subs[subindex]
     shown = _summary(device, var, obj)
-    return Change.model_construct(
+    return new_change(
         kind=kind, impact=Impact.COMPATIBLE, index=obj.index, subindex=subindex, new=var.name, new_text=shown
     )
 
@@ -144,15 +145,13 @@ def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Cha
 def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
     """The other side of `_added`: what was there, now gone."""
     added = _added(device, obj, subindex, kind)
-    return added.model_copy(
-        update={"impact": Impact.BREAKING, "old": added.new, "old_text": added.new_text, "new": None, "new_text": ""}
-    )
+    return renamed(added, impact=Impact.BREAKING, old=added.new, old_text=added.new_text, new=None, new_text="")
 
 
 def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     index = old.index
     if old.kind != new.kind:
-        yield Change.model_construct(
+        yield new_change(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
             index=index,
@@ -194,7 +193,7 @@ def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     assert isinstance(old.var, SubObject) and isinstance(new.var, SubObject)
     before, after = old.var.object_type or ObjectKind.VAR, new.var.object_type or ObjectKind.VAR
     if before != after:
-        yield Change.model_construct(
+        yield new_change(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
             index=old.owner.index,
@@ -209,6 +208,10 @@ def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 
 def _entry_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
+    if _compared(old.var) == _compared(new.var):
+        # Most entries of two revisions are alike; only the identifier, which other entries decide, can differ.
+        yield from _name(sides, old, new)
+        return
     for compare in _FIELD_COMPARISONS:
         yield from compare(sides, old, new)
 
@@ -223,7 +226,7 @@ def _plain(
     new: object,
     note: str = "",
 ) -> Change:
-    return Change.model_construct(
+    return new_change(
         kind=kind,
         impact=impact,
         index=index,
@@ -283,7 +286,7 @@ def _as_text(
     kind: Kind, impact: Impact, index: int, subindex: int | None, field: str, old: str, new: str, note: str = ""
 ) -> Change:
     """A change of a field whose values are shown as they are (identifiers, access types, link lists)."""
-    return Change.model_construct(
+    return new_change(
         kind=kind,
         impact=impact,
         index=index,
@@ -313,7 +316,7 @@ def _data_type(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     before = sides.old.entry_type(old.var, old.owner)
     after = sides.new.entry_type(new.var, new.owner)
     impact, note = data_type_impact(before, after)
-    yield Change.model_construct(
+    yield new_change(
         kind=Kind.DATA_TYPE,
         impact=impact,
         index=old.owner.index,
@@ -378,7 +381,7 @@ def _value_change(
     dtype: DataType | None,
     note: str = "",
 ) -> Change:
-    return Change.model_construct(
+    return new_change(
         kind=kind,
         impact=impact,
         index=old.owner.index,
@@ -519,6 +522,21 @@ def _comment_text(comments: dict[str, list[str]]) -> str:
         line.strip() for lines in comments.values() for line in lines if not line.startswith(STORAGE_PREFIX)
     )
 
+
+# Every field of an entry that a comparison after `_name` reads: equal in all, none of them reports a change.
+_compared = attrgetter(
+    "data_type",
+    "access",
+    "pdo_mapping",
+    "low_limit",
+    "high_limit",
+    "default",
+    "parameter_value",
+    *(field for field, _, _ in _PLAIN_FIELDS),
+    "canopennode",
+    "extra",
+    "comments",
+)
 
 _FIELD_COMPARISONS: tuple[Callable[[Sides, Entry, Entry], Iterator[Change]], ...] = (
     _name,

@@ -8,7 +8,7 @@ from ..model import Comments, Commissioning, Device, DummyUsage, RawSection, Sec
 from . import describe
 from .compare import section_changes
 from .impact import count_impact, flag_impact
-from .records import Change, Impact, Kind
+from .records import Change, Impact, Kind, new_change
 
 _IDENTITY = {
     "vendor_number": (Impact.BREAKING, "a master checks the vendor-ID (0x1018 sub 1) against its configuration"),
@@ -56,7 +56,7 @@ def _field_change(kind: Kind, impact: Impact, field: str, old: object, new: obje
     def storable(value: object) -> bool | int | float | str | None:
         return value if value is None or isinstance(value, (bool, int, float, str)) else str(value)
 
-    return Change.model_construct(
+    return new_change(
         kind=kind,
         impact=impact,
         field=field,

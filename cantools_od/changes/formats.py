@@ -11,7 +11,7 @@ from collections import defaultdict
 from pathlib import PurePath
 
 from . import describe
-from .records import Change, Impact, Kind
+from .records import Change, Impact, Kind, new_change
 
 _FAMILIES = {".eds": "EDS", ".dcf": "EDS", ".xdd": "XDD", ".xdc": "XDD", ".xpd": "XDD"}
 _NAMES = {"EDS": "EDS/DCF", "XDD": "XDD/XDC"}
@@ -84,7 +84,7 @@ def split(old_source: str, new_source: str, changes: list[Change]) -> tuple[list
             else ""
         )
         lines.append(
-            Change.model_construct(
+            new_change(
                 kind=Kind.NOT_COMPARABLE,
                 impact=Impact.COSMETIC,
                 field=field,

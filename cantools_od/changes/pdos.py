@@ -9,7 +9,7 @@ from ..model.cia301.pdo import is_dummy_index
 from ..views.pdo import Pdo, PdoEntry, pdo_map
 from . import describe
 from .compare import Sides
-from .records import Change, Impact, Kind, PdoDiff, PdoEntryView, PdoView
+from .records import Change, Impact, Kind, PdoDiff, PdoEntryView, PdoView, new_change
 
 COB_ID_SUB, TRANSMISSION_SUB = 1, 2
 # The timing entries of a PDO communication record (CiA 301 §7.5.2.35/36), with their unit.
@@ -54,13 +54,11 @@ def _layout(pdo: Pdo) -> tuple[tuple[int, int, int, int], ...]:
 def _changes(before: Pdo | None, after: Pdo | None, node_id: int | None) -> list[Change]:
     if before is None and after is not None:
         return [
-            Change.model_construct(
-                kind=Kind.PDO_ADDED, impact=Impact.COMPATIBLE, index=after.comm_index, new_text=_summary(after)
-            )
+            new_change(kind=Kind.PDO_ADDED, impact=Impact.COMPATIBLE, index=after.comm_index, new_text=_summary(after))
         ]
     if after is None and before is not None:
         return [
-            Change.model_construct(
+            new_change(
                 kind=Kind.PDO_REMOVED, impact=Impact.BREAKING, index=before.comm_index, old_text=_summary(before)
             )
         ]
@@ -71,7 +69,7 @@ def _changes(before: Pdo | None, after: Pdo | None, node_id: int | None) -> list
         changes.append(cob)
     if before.transmission_type != after.transmission_type:
         changes.append(
-            Change.model_construct(
+            new_change(
                 kind=Kind.PDO_TRANSMISSION_TYPE,
                 impact=Impact.VALUE,
                 index=before.comm_index,
@@ -85,7 +83,7 @@ def _changes(before: Pdo | None, after: Pdo | None, node_id: int | None) -> list
         )
     if _layout(before) != _layout(after):
         changes.append(
-            Change.model_construct(
+            new_change(
                 kind=Kind.PDO_LAYOUT,
                 impact=Impact.BREAKING,
                 index=before.map_index,
@@ -126,7 +124,7 @@ def _timing(sides: Sides, before: Pdo, after: Pdo) -> Iterator[Change]:
     old, new = timing(sides.old, before, sides.old_node), timing(sides.new, after, sides.new_node)
     for sub, (label, _, _) in TIMING_SUBS.items():
         if sub in old and sub in new and old[sub] != new[sub]:  # an entry on one side only is a sub-object change
-            yield Change.model_construct(
+            yield new_change(
                 kind=Kind.PDO_TIMING,
                 impact=Impact.VALUE,
                 index=before.comm_index,
@@ -231,7 +229,7 @@ def _cob_id(before: Pdo, after: Pdo, node_id: int | None) -> Change | None:
         for cob in (before.cob_id, after.cob_id)
     ]
     same = resolved[0] == resolved[1] and not isinstance(resolved[0], NodeIdExpr)
-    return Change.model_construct(
+    return new_change(
         kind=Kind.NODEID_FORM if same else Kind.PDO_COB_ID,
         impact=Impact.VALUE if same else Impact.BREAKING,
         index=before.comm_index,

@@ -8,10 +8,12 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Iterator
 from enum import StrEnum
+from typing import Any
 
 from pydantic import BaseModel, ConfigDict, PrivateAttr, computed_field
 
 from ..model import Value
+from ..model.assemble import construct
 from ..views.pdo import Pdo
 
 
@@ -136,6 +138,17 @@ class Change(BaseModel):
         """Who a breaking change hurts, `wire` and/or `code` (empty for every other impact)."""
         who = who_breaks(self.kind, self.field) if self.impact is Impact.BREAKING else frozenset()
         return [hurt for hurt in Breaks if hurt in who]
+
+
+def new_change(**fields: Any) -> Change:
+    """A Change of values already of the right type, without validation: a diff of two large revisions makes
+    tens of thousands, and pydantic's generic `model_construct` took a third of such a diff's time."""
+    return construct(Change, fields)
+
+
+def renamed(change: Change, **fields: Any) -> Change:
+    """`change` with some fields replaced (`model_copy(update=...)`, without its generic work)."""
+    return construct(Change, {**change.__dict__, **fields})
 
 
 class ObjectDiff(BaseModel):

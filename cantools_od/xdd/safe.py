@@ -11,6 +11,7 @@ preserving writer build on.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from xml.parsers import expat
 
@@ -156,10 +157,19 @@ def utf8_form(data: bytes) -> bytes:
 _TAG = re.compile(rb"""<[^>"']*(?:(?:"[^"]*"|'[^']*')[^>"']*)*>""")
 
 
-def tag_end(data: bytes, start: int) -> int:
-    """The offset just after the `>` closing the tag that starts at `start`, skipping quoted values."""
+def _tag_end_python(data: bytes, start: int) -> int:
+    """The offset just after the `>` closing the tag that starts at `start`, skipping quoted values.
+
+    The reference for the compiled `_tags.tag_end`, which does the same and is used when it is installed."""
     match = _TAG.match(data, start)
     return match.end() if match is not None else len(data)
+
+
+tag_end: Callable[[bytes, int], int]
+try:
+    from ._tags import tag_end
+except ImportError:  # built without a C compiler: the same, in Python
+    tag_end = _tag_end_python
 
 
 def parse(data: bytes) -> Element:

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 
 from ..eds.format import DECIMAL_INTEGER, format_value
 from ..eds.hints import Hints
-from ..model import AccessType, CanopenNodeInfo, Commissioning, Device, Dialect, Object, ObjectKind, Variable
+from ..model import AccessType, Commissioning, Device, Dialect, Object, ObjectKind, Variable
 from .compact_marks import compact_block
 from .file_comments import comment_block
 from .fragments import restore
@@ -276,8 +276,8 @@ def _limits(out: _Out, device: Device, var: Variable, owner: Object) -> None:
 
 
 def _properties(out: _Out, var: Variable) -> None:
-    info = var.canopennode or CanopenNodeInfo.model_construct()
-    for name, field in _PROPERTIES:
+    info = var.canopennode
+    for name, field in _PROPERTIES if info is not None else ():  # most entries have none
         value = getattr(info, field)
         if value is not None:
             text = _attr(value.value if hasattr(value, "value") else value)

@@ -43,18 +43,19 @@ class ReadContext:
 
     def mark(self, origin: Origin, key: str, element: Element, attr: str | None = None) -> None:
         """Record where `key` of the model is written: an attribute, or (attr None) an element's text."""
-        if attr is None or attr in self.spans(element):
-            self.marks.setdefault(id(origin), {})[key] = (element, attr)
+        at = self.positions.at
         if attr is None:
-            line, column = self.positions.at(element.start)
-            value_column = self.positions.at(element.content_start)[1] if element.content_start else column
+            self.marks.setdefault(id(origin), {})[key] = (element, attr)
+            line, column = at(element.start)
+            value_column = at(element.content_start)[1] if element.content_start else column
             origin.keys[key] = (line, column, value_column)
             return
         span = self.spans(element).get(attr)
         if span is None:
             return
-        line, column = self.positions.at(span[0])
-        value_line, value_column = self.positions.at(span[1])
+        self.marks.setdefault(id(origin), {})[key] = (element, attr)
+        line, column = at(span[0])
+        value_line, value_column = at(span[1])
         origin.keys[key] = (line, column, value_column if value_line == line else column)
 
     def error(self, code: str, message: str, element: Element, attr: str | None = None) -> None:

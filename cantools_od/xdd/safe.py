@@ -105,34 +105,34 @@ class _Builder:
         self.count += 1
         if self.count > MAX_ELEMENTS:
             raise XmlRefused("XDD003", f"more than {MAX_ELEMENTS} elements; refused", self._offset())
-        if len(self.stack) >= MAX_DEPTH:
+        stack = self.stack
+        if len(stack) >= MAX_DEPTH:
             raise XmlRefused("XDD003", f"elements nested deeper than {MAX_DEPTH}; refused", self._offset())
         scope = self.scopes[-1]
-        declared = [key for key in values if key == "xmlns" or key.startswith("xmlns:")]
-        if declared:
-            scope = dict(scope)
-            for key in declared:
-                scope[key[6:]] = values[key]  # "xmlns" gives the default namespace, the "" prefix
+        if values and any(key.startswith("xmlns") for key in values):
+            scope = _declared(scope, values)
         self.scopes.append(scope)
         prefix, _, local = name.rpartition(":")
-        start = self._offset()
-        element = Element(name, local, scope.get(prefix, ""), values, start)
-        element.content_start = tag_end(self.data, start)
-        if self.stack:
-            element.parent = self.stack[-1]
-            self.stack[-1].children.append(element)
+        start = self.parser.CurrentByteIndex
+        element = Element(name, local, scope.get(prefix, ""), values, start, tag_end(self.data, start))
+        if stack:
+            element.parent = parent = stack[-1]
+            parent.children.append(element)
         else:
             self.root = element
-        self.stack.append(element)
+        stack.append(element)
         self.texts.append([])
 
     def end(self, name: str) -> None:
         element = self.stack.pop()
         self.scopes.pop()
-        element.text = "".join(self.texts.pop())
-        here = self._offset()
-        if self.data[element.content_start - 2 : element.content_start] == b"/>" and here <= element.content_start:
-            element.content_end = element.end = element.content_start
+        texts = self.texts.pop()
+        if texts:
+            element.text = texts[0] if len(texts) == 1 else "".join(texts)
+        here = self.parser.CurrentByteIndex
+        content_start = element.content_start
+        if here <= content_start and self.data[content_start - 2 : content_start] == b"/>":
+            element.content_end = element.end = content_start
         else:
             element.content_end = here
             element.end = tag_end(self.data, here)
@@ -140,6 +140,15 @@ class _Builder:
     def characters(self, content: str) -> None:
         if self.texts:
             self.texts[-1].append(content)
+
+
+def _declared(scope: dict[str, str], values: dict[str, str]) -> dict[str, str]:
+    """`scope` with the namespaces an element's attributes declare ("xmlns" the default one, the "" prefix)."""
+    scope = dict(scope)
+    for key, value in values.items():
+        if key == "xmlns" or key.startswith("xmlns:"):
+            scope[key[6:]] = value
+    return scope
 
 
 def utf8_form(data: bytes) -> bytes:

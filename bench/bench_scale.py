@@ -67,12 +67,19 @@ def stale_install() -> str | None:
         if not (installed / module.relative_to(SOURCE)).is_file()
         or (installed / module.relative_to(SOURCE)).read_bytes() != module.read_bytes()
     ]
-    compiled = (installed / "eds" / f"_scan{suffix}" for suffix in EXTENSION_SUFFIXES)
-    if not differ and (SOURCE / "eds" / "_scan.c").is_file() and not any(path.is_file() for path in compiled):
-        return "the installed cantools_od has no compiled EDS scanner (built without a C compiler?)"
     if not differ:
-        return None
+        return _uncompiled(installed)
     return f"the installed cantools_od differs from the source tree in {len(differ)} modules ({differ[0]}, ...)"
+
+
+def _uncompiled(installed: Path) -> str | None:
+    """What the installed package lacks of the extension modules the source tree has a C file for."""
+    for source in sorted(SOURCE.rglob("_*.c")):
+        folder = installed / source.parent.relative_to(SOURCE)
+        if not any((folder / f"{source.stem}{suffix}").is_file() for suffix in EXTENSION_SUFFIXES):
+            module = source.relative_to(SOURCE).with_suffix("").as_posix()
+            return f"the installed cantools_od has no compiled {module} (built without a C compiler?)"
+    return None
 
 
 def refuse_stale() -> None:

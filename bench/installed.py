@@ -1,7 +1,7 @@
 """Imported first by each benchmark that runs cantools-od inside its own process, before anything of cantools_od:
-the figures are then the installed package's, as users run it (with the compiled EDS scanner the wheel carries),
-not the source tree's, which `PYTHONPATH=.` would put first and which has no compiled scanner. A benchmark stops
-with one line when the installed package is not the source tree (bench_scale.refuse_stale)."""
+the figures are then the installed package's, as users run it (with the compiled extension modules the wheel
+carries), not the source tree's, which `PYTHONPATH=.` would put first and which has none compiled. A benchmark
+stops with one line when the installed package is not the source tree (bench_scale.refuse_stale)."""
 
 from __future__ import annotations
 

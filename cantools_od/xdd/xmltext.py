@@ -6,20 +6,21 @@ module imports urllib.request, and with it http, email and ssl, for reading any 
 
 from __future__ import annotations
 
+from functools import cache
+
 _MARKUP = {"&": "&amp;", "<": "&lt;", ">": "&gt;"}
 _ATTRIBUTE_BREAKS = {"\n": "&#10;", "\r": "&#13;", "\t": "&#9;"}  # an attribute value's line ends survive reading
 
 
 def escape(text: str, more: dict[str, str] | None = None) -> str:
     """`text` as element content: `&`, `<` and `>` as references, and each single character of `more` as given."""
-    table = str.maketrans({**_MARKUP, **more}) if more else _MARKUP_TABLE
-    return text.translate(table)
+    return text.translate(_table(tuple(more.items())) if more else _MARKUP_TABLE)
 
 
 def quoteattr(text: str, more: dict[str, str] | None = None) -> str:
     """`text` as a quoted attribute value: escaped as `escape` does and with line ends and tabs as references,
     in double quotes, or in single quotes when it holds a double quote and no single one (else `"` as &quot;)."""
-    value = escape(text, {**(more or {}), **_ATTRIBUTE_BREAKS})
+    value = text.translate(_table((*(more or {}).items(), *_ATTRIBUTE_BREAKS.items())))
     if '"' not in value:
         return f'"{value}"'
     if "'" not in value:
@@ -28,3 +29,10 @@ def quoteattr(text: str, more: dict[str, str] | None = None) -> str:
 
 
 _MARKUP_TABLE = str.maketrans(_MARKUP)
+
+
+@cache
+def _table(more: tuple[tuple[str, str], ...]) -> dict[int, str]:
+    """The translation table of the markup and `more` (later pairs win): a writer asks for the same few tables
+    tens of thousands of times."""
+    return str.maketrans({**_MARKUP, **dict(more)})

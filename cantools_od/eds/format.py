@@ -71,6 +71,12 @@ def _written_radix(hint: str | None) -> tuple[Radix, int]:
     return Radix.CANONICAL, 0  # octal, C suffixes, sums: not a spelling worth keeping
 
 
+def reads_hint(value: object, radix: Radix) -> bool:
+    """Whether formatting `value` with `radix` looks at the text it was read from (`hint`): an integer only to
+    keep its radix as written, a REAL or TIME value always. The writer asks for the text only then."""
+    return radix is Radix.AS_WRITTEN or isinstance(value, float | TimeValue)
+
+
 def format_int(value: int, radix: Radix, width: int, hint: str | None = None) -> str:
     """An integer: `width` is the hex digit count of the canonical form (0: canonical is decimal)."""
     if radix is Radix.AS_WRITTEN:

@@ -11,7 +11,7 @@ from ..model.device import Comments, Commissioning, DeviceInfo, FileInfo
 from . import ini
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
 from .dialect import detect_dialect
-from .format import CANONICAL, IntStyle, format_key, format_value
+from .format import CANONICAL, IntStyle, format_key, format_value, reads_hint
 from .hints import NO_HINTS, Hints
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec, Kind
 from .storage import storage_comments
@@ -128,9 +128,9 @@ def _keyed(
         else:
             value = data[attr]
         if value is not None:
-            entries[spelling] = format_key(
-                spelling, value, style.ints.radix(spelling), style.hints.text(model, spelling)
-            )
+            radix = style.ints.radix(spelling)
+            hint = style.hints.text(model, spelling) if reads_hint(value, radix) else None
+            entries[spelling] = format_key(spelling, value, radix, hint)
         elif _kept_empty(model, spelling, kind, style):
             entries[spelling] = ""
     return _with_extra(name, entries, model)
@@ -166,8 +166,9 @@ def _variable_entries(device: Device, var: Variable, owner: Object, style: _Styl
             if _kept_empty(var, spelling, kind, style):
                 entries[spelling] = ""
             continue
-        radix, hint = style.ints.radix(spelling), style.hints.text(var, spelling)
-        if kind.value == "value":
+        radix = style.ints.radix(spelling)
+        hint = style.hints.text(var, spelling) if reads_hint(value, radix) else None
+        if kind is Kind.VALUE:
             dtype = dtype or device.entry_type(var, owner)
             entries[spelling] = format_value(value, dtype, device.dialect, style.as_written, radix, hint)
         else:

@@ -6,7 +6,7 @@ import re
 from functools import lru_cache
 
 from ..model import Dialect
-from .ini import IniFile, IniSection
+from .ini import IniSection, Stream
 
 DIRECTIVE = re.compile(r"[;#]\s*cantools-od\s*:\s*dialect\s*[=:]?\s*([\w-]+)", re.IGNORECASE)
 _MAPPING_SECTION = re.compile(r"1[67ab][0-9a-f]{2}\Z", re.IGNORECASE)
@@ -24,16 +24,20 @@ def directive(text: str) -> Dialect | None:
         return None
 
 
-def detect_dialect(parsed: IniFile) -> Dialect:
-    """A directive comment at the top, else evidence only a tool of that family writes, else CiA 306."""
-    evidence = DialectEvidence()
-    for section in parsed.sections:
+def text_dialect(text: str) -> Dialect:
+    """The dialect the reader finds in `text`, a whole EDS/DCF: what a writer checks its output against."""
+    stream = Stream([text])
+    evidence = DialectEvidence(may_hold_markers(text))
+    top: list[str] | None = None
+    for section in stream:
+        if top is None:
+            top = section.comments
         evidence.see(section)
-    return evidence.dialect(parsed.preamble_comments + (parsed.sections[0].comments if parsed.sections else []))
+    return evidence.dialect(top if top is not None else stream.trailing)
 
 
 class DialectEvidence:
-    """detect_dialect over sections seen one at a time, for a reader that does not keep them."""
+    """Dialect evidence gathered from sections seen one at a time, for a reader that does not keep them."""
 
     def __init__(self, markers: bool = True) -> None:
         self.lely = False

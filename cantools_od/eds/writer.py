@@ -8,9 +8,8 @@ from typing import Any
 from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
 from ..model.cia301.pdo import partner
 from ..model.device import Comments, Commissioning, DeviceInfo, FileInfo
-from . import ini
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
-from .dialect import detect_dialect
+from .dialect import text_dialect
 from .format import CANONICAL, IntStyle, format_key, format_value, reads_hint
 from .hints import NO_HINTS, Hints
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec, Kind
@@ -236,31 +235,10 @@ def render(out: list[OutSection], trailing: list[str], eol: str = "\n") -> str:
     return eol.join(lines) + eol if lines else ""
 
 
-def _as_read(out: list[OutSection]) -> ini.IniFile:
-    """The sections as the reader would see them in the rendered text, without parsing that text."""
-    return ini.IniFile(
-        sections=[
-            ini.IniSection(
-                name=section.name,
-                line=0,
-                column=1,
-                entries=[
-                    ini.Entry(key, value, 0, 0, 0, tuple(section.comments.get(key, ())))
-                    for key, value in section.entries.items()
-                ],
-                comments=list(section.comments.get("", [])),
-            )
-            for section in out
-        ],
-        preamble_comments=[],
-        preamble_stray=[],
-    )
-
-
 def canonical_text(device: Device, dcf: bool = False, ints: IntStyle = CANONICAL) -> str:
     out = sections(device, dcf, ints=ints)
     text = render(out, device.trailing_comments)
-    if detect_dialect(_as_read(out)) is not device.dialect:
+    if text_dialect(text) is not device.dialect:
         # Quoting and REAL forms depend on the dialect: say it where the text alone would mislead.
         text = f"; cantools-od: dialect={device.dialect.value}\n" + text
     return text

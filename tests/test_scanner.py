@@ -4,9 +4,6 @@ generated text full of what breaks lines, blanks, comments and wide characters."
 
 from __future__ import annotations
 
-import shutil
-import subprocess
-import sysconfig
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
@@ -86,13 +83,3 @@ def test_compiled_scanner_refuses_wrong_arguments_with_an_exception() -> None:
 def test_a_section_must_start_with_its_header(scan: Callable[[], Callable[..., Any]]) -> None:
     with pytest.raises(ValueError, match="starts with its header line"):
         scan()("Key=1\n[A]\n", 1, 1, [], [], [], [], True)
-
-
-@pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc is not installed")
-def test_scanner_source_compiles_without_warnings(tmp_path: Path) -> None:
-    include = sysconfig.get_paths()["include"]
-    flags = ["-Wall", "-Wextra", "-Werror", "-Wconversion", "-Wshadow", "-fsyntax-only"]
-    run = subprocess.run(
-        ["gcc", *flags, f"-I{include}", str(ROOT / "cantools_od" / "eds" / "_scan.c")], capture_output=True, text=True
-    )
-    assert run.returncode == 0, run.stderr

@@ -23,7 +23,7 @@ from ..model import (
 )
 from . import describe
 from .impact import access_impact, canopennode_impact, data_type_impact, flag_impact, limit_impact, value_impact
-from .records import Change, Impact, Kind, ObjectDiff, new_change, renamed
+from .records import Change, Impact, Kind, ObjectDiff, new_change, replaced
 
 
 @dataclass(frozen=True)
@@ -109,7 +109,7 @@ def _entry_name(old: Object | None, new: Object | None, subindex: int | None) ->
 
 
 def _named(change: Change, old: Object | None, new: Object | None) -> Change:
-    return renamed(change, name=_entry_name(old, new, change.subindex))
+    return replaced(change, name=_entry_name(old, new, change.subindex))
 
 
 def _summary(device: Device, var: Variable, owner: Object) -> str:
@@ -145,7 +145,7 @@ def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Cha
 def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
     """The other side of `_added`: what was there, now gone."""
     added = _added(device, obj, subindex, kind)
-    return renamed(added, impact=Impact.BREAKING, old=added.new, old_text=added.new_text, new=None, new_text="")
+    return replaced(added, impact=Impact.BREAKING, old=added.new, old_text=added.new_text, new=None, new_text="")
 
 
 def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
@@ -523,20 +523,10 @@ def _comment_text(comments: dict[str, list[str]]) -> str:
     )
 
 
-# Every field of an entry that a comparison after `_name` reads: equal in all, none of them reports a change.
-_compared = attrgetter(
-    "data_type",
-    "access",
-    "pdo_mapping",
-    "low_limit",
-    "high_limit",
-    "default",
-    "parameter_value",
-    *(field for field, _, _ in _PLAIN_FIELDS),
-    "canopennode",
-    "extra",
-    "comments",
-)
+# An entry's fields but its name (`_name`'s, with the identifiers) and origin (where it is written, never a
+# change): equal in all, no comparison after `_name` reports one. A field added to Variable is in it unless named
+# here, so that a comparison of it is never skipped.
+_compared = attrgetter(*(field for field in Variable.model_fields if field not in ("name", "origin")))
 
 _FIELD_COMPARISONS: tuple[Callable[[Sides, Entry, Entry], Iterator[Change]], ...] = (
     _name,

@@ -146,7 +146,7 @@ def new_change(**fields: Any) -> Change:
     return construct(Change, fields)
 
 
-def renamed(change: Change, **fields: Any) -> Change:
+def replaced(change: Change, **fields: Any) -> Change:
     """`change` with some fields replaced (`model_copy(update=...)`, without its generic work)."""
     return construct(Change, {**change.__dict__, **fields})
 

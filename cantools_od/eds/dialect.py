@@ -28,12 +28,9 @@ def text_dialect(text: str) -> Dialect:
     """The dialect the reader finds in `text`, a whole EDS/DCF: what a writer checks its output against."""
     stream = Stream([text])
     evidence = DialectEvidence(may_hold_markers(text))
-    top: list[str] | None = None
     for section in stream:
-        if top is None:
-            top = section.comments
         evidence.see(section)
-    return evidence.dialect(top if top is not None else stream.trailing)
+    return evidence.dialect(stream.trailing)
 
 
 class DialectEvidence:
@@ -43,15 +40,20 @@ class DialectEvidence:
         self.lely = False
         self.other: Dialect | None = None  # the first evidence of another family, in file order
         self.markers = markers  # False: the text has none of MARKERS, so only keys can tell
+        self.top: list[str] | None = None  # the comments above the first section, where a directive stands
 
     def see(self, section: IniSection) -> None:
+        """Takes the next section, as read (a directive among the first one's comments still there)."""
+        if self.top is None:
+            self.top = section.comments
         if not self.lely:
             self.lely = _lely(section)
         if self.other is None and (self.markers or section.plain is None or _telling_keys(section.plain[0])):
             self.other = _other(section)
 
-    def dialect(self, top: list[str]) -> Dialect:
-        for comment in top:
+    def dialect(self, trailing: list[str]) -> Dialect:
+        """`trailing`: the comments after the last section, where a text without sections has its directive."""
+        for comment in self.top if self.top is not None else trailing:
             named = directive(comment)
             if named is not None:
                 return named

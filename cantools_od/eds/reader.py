@@ -197,21 +197,21 @@ def _build(
     )
     build = _Build(device, report, repeated)
     evidence = DialectEvidence(markers)
-    top: list[str] | None = None
+    first = True
     for section in stream:
-        if top is None:
+        evidence.see(section)  # before the directive leaves the first section's comments
+        if first:
+            first = False
             # A dialect directive is file metadata (kept in `dialect`), not a comment on the first section.
-            top = section.comments
-            section.comments = [c for c in top if directive(c) is None]
+            section.comments = [c for c in section.comments if directive(c) is None]
             for line, stray in stream.preamble_stray:
                 report.error("EDS101", f"text before the first section: {stray[:60]!r}", line, 1)
-        evidence.see(section)
         build.add(section)
-    if top is None:
+    if first:
         for line, stray in stream.preamble_stray:
             report.error("EDS101", f"text before the first section: {stray[:60]!r}", line, 1)
     device.trailing_comments = stream.trailing
-    device.dialect = evidence.dialect(top if top is not None else stream.trailing)
+    device.dialect = evidence.dialect(stream.trailing)
     for line, length in stream.long_lines:
         report.error("EDS001", f"line has {length} characters; CiA 306 allows {ini.MAX_LINE}", line, ini.MAX_LINE + 1)
     build.finish()

@@ -10,7 +10,7 @@ from ..model.cia301.pdo import partner
 from ..model.device import Comments, Commissioning, DeviceInfo, FileInfo
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
 from .dialect import text_dialect
-from .format import CANONICAL, IntStyle, format_key, format_value, reads_hint
+from .format import CANONICAL, IntStyle, Radix, format_key, format_value, reads_hint
 from .hints import NO_HINTS, Hints
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec, Kind
 from .storage import storage_comments
@@ -22,6 +22,11 @@ class _Style:
     as_written: bool
     ints: IntStyle = CANONICAL
     hints: Hints = NO_HINTS
+
+    def radix_and_hint(self, section: Section, key: str, value: object) -> tuple[Radix, str | None]:
+        """The radix of `key`, and the text `value` was read from where formatting reads it (format.reads_hint)."""
+        radix = self.ints.radix(key)
+        return radix, self.hints.text(section, key) if reads_hint(value, radix) else None
 
 
 @dataclass
@@ -127,9 +132,7 @@ def _keyed(
         else:
             value = data[attr]
         if value is not None:
-            radix = style.ints.radix(spelling)
-            hint = style.hints.text(model, spelling) if reads_hint(value, radix) else None
-            entries[spelling] = format_key(spelling, value, radix, hint)
+            entries[spelling] = format_key(spelling, value, *style.radix_and_hint(model, spelling, value))
         elif _kept_empty(model, spelling, kind, style):
             entries[spelling] = ""
     return _with_extra(name, entries, model)
@@ -165,8 +168,7 @@ def _variable_entries(device: Device, var: Variable, owner: Object, style: _Styl
             if _kept_empty(var, spelling, kind, style):
                 entries[spelling] = ""
             continue
-        radix = style.ints.radix(spelling)
-        hint = style.hints.text(var, spelling) if reads_hint(value, radix) else None
+        radix, hint = style.radix_and_hint(var, spelling, value)
         if kind is Kind.VALUE:
             dtype = dtype or device.entry_type(var, owner)
             entries[spelling] = format_value(value, dtype, device.dialect, style.as_written, radix, hint)

@@ -277,11 +277,12 @@ def _limits(out: _Out, device: Device, var: Variable, owner: Object) -> None:
 
 def _properties(out: _Out, var: Variable) -> None:
     info = var.canopennode
-    for name, field in _PROPERTIES if info is not None else ():  # most entries have none
-        value = getattr(info, field)
-        if value is not None:
-            text = _attr(value.value if hasattr(value, "value") else value)
-            out.add(6, f'<q1:property name="{name}" value={text} />')
+    if info is not None:  # most entries have none
+        for name, field in _PROPERTIES:
+            value = getattr(info, field)
+            if value is not None:
+                text = _attr(value.value if hasattr(value, "value") else value)
+                out.add(6, f'<q1:property name="{name}" value={text} />')
     for key, text in var.extra.items():
         if key.startswith("property."):
             out.add(6, f"<q1:property name={_attr(key[9:])} value={_attr(text)} />")

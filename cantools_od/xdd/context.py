@@ -45,18 +45,17 @@ class ReadContext:
         """Record where `key` of the model is written: an attribute, or (attr None) an element's text."""
         at = self.positions.at
         if attr is None:
-            self.marks.setdefault(id(origin), {})[key] = (element, attr)
             line, column = at(element.start)
-            value_column = at(element.content_start)[1] if element.content_start else column
-            origin.keys[key] = (line, column, value_column)
-            return
-        span = self.spans(element).get(attr)
-        if span is None:
-            return
+            where = (line, column, at(element.content_start)[1] if element.content_start else column)
+        else:
+            span = self.spans(element).get(attr)
+            if span is None:
+                return
+            line, column = at(span[0])
+            value_line, value_column = at(span[1])
+            where = (line, column, value_column if value_line == line else column)
         self.marks.setdefault(id(origin), {})[key] = (element, attr)
-        line, column = at(span[0])
-        value_line, value_column = at(span[1])
-        origin.keys[key] = (line, column, value_column if value_line == line else column)
+        origin.keys[key] = where
 
     def error(self, code: str, message: str, element: Element, attr: str | None = None) -> None:
         self.report.error(code, message, *self.where(element, attr))

@@ -36,15 +36,16 @@ def sniff(data: bytes, name: str = "") -> Kind:
     """The kind of `data` (named `name`, whose extension counts when content alone cannot tell).
 
     Raises NotADeviceDescription for content that no reader takes."""
+    what = _expected(name)
     if data.startswith(_UTF16_BOMS):
-        raise NotADeviceDescription("UTF-16 text; save it as UTF-8 or ASCII")
+        raise NotADeviceDescription("UTF-16 text; save it as UTF-8 or ASCII", what)
     nul = data.find(b"\0")
     if nul >= 0:
         line = data.count(b"\n", 0, nul) + 1
-        raise NotADeviceDescription(f"binary data (a NUL byte on line {line})")
+        raise NotADeviceDescription(f"binary data (a NUL byte on line {line})", what)
     body = data.removeprefix(b"\xef\xbb\xbf").lstrip(_BLANK)
     if not body:
-        raise NotADeviceDescription("the file is empty" if not data else "the file holds only blank space")
+        raise NotADeviceDescription("the file is empty" if not data else "the file holds only blank space", what)
     if body.startswith(b"<"):
         return "xml"
     if body.startswith(b"{"):
@@ -52,8 +53,14 @@ def sniff(data: bytes, name: str = "") -> Kind:
     if body.startswith(b"[") and _is_json_array(body):  # `[1,2,3]` has a "section" but is JSON
         raise NotADeviceDescription("JSON that is not a cantools-od model (an array)", what="a device description")
     if not has_section(body):
-        raise NotADeviceDescription("text without a [section] header")
+        raise NotADeviceDescription("text without a [section] header", what)
     return "eds"
+
+
+def _expected(name: str) -> str:
+    """What a file of this name was meant to be, for a refusal that content alone decides: a binary
+    `device.xdd` is no XDD/XDC file, whatever the EDS reader would have said."""
+    return "an XDD/XDC (CiA 311) file" if name.lower().endswith(_XML_SUFFIXES) else "an EDS/DCF file"
 
 
 def _is_json_array(data: bytes) -> bool:

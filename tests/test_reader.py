@@ -292,6 +292,14 @@ def test_what_is_no_device_description_is_refused(data: bytes) -> None:
         loads(data)
 
 
+@pytest.mark.parametrize("name", ["device.xdd", "DEVICE.XDC", "device.xml"])
+@pytest.mark.parametrize("data", [b"", b" \n", b"\x00\xff\xfe", b"no markup\n"])
+def test_a_refused_xml_file_is_named_as_one(name: str, data: bytes) -> None:
+    with pytest.raises(NotADeviceDescription, match=r"^not an XDD/XDC \(CiA 311\) file: ") as refused:
+        loads(data, source=name)
+    assert refused.value.code == "EDS000"
+
+
 def test_xml_given_as_an_eds_is_refused() -> None:
     with pytest.raises(NotADeviceDescription, match=r"^not an EDS/DCF file: XML"):
         loads(b"<?xml version='1.0'?><a/>", fmt="eds")

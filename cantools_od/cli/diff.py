@@ -183,7 +183,24 @@ def reading_note(device: Device, name: str) -> str:
     )
 
 
+def refusal(device: Device, name: str) -> str:
+    """Why no side can be made of the device, "" when one can: the reader refused the file (XML that is not
+    well-formed, hostile or not CiA 311), so no model of it exists and every object would show as removed."""
+    from ..xdd import REFUSED_CODES
+
+    for found in device.diagnostics:
+        if found.code in REFUSED_CODES:
+            where = found.location
+            return f"{name}:{where.line}:{where.column}: error: {found.message} [{found.code}]; nothing compared"
+    return ""
+
+
 def _note_errors(device: Device, name: str) -> None:
+    """The reading note on stderr; exit 2 with one line when the file was refused."""
+    refused = refusal(device, name)
+    if refused:
+        click.echo(refused, err=True)
+        sys.exit(EXIT_USAGE)
     note = reading_note(device, name)
     if note:
         click.echo(note, err=True)

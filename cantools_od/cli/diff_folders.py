@@ -18,7 +18,7 @@ import click
 from ..model import Device
 from .batch import run_each
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, device_or_reason
-from .diff import NULL_DEVICE, found_in, missing_side, read_pins, reading_note, render
+from .diff import NULL_DEVICE, found_in, missing_side, read_pins, reading_note, refusal, render
 
 # Device descriptions by file name; a JSON model is compared only when named (a folder holds other JSON files).
 FOLDER_SUFFIXES = (".eds", ".dcf", ".xdd", ".xdc", ".xpd")
@@ -129,6 +129,9 @@ def _side(path: str, node_id: int | None, messages: list[str]) -> tuple[Device, 
     device = device_or_reason(path, node_id)
     if isinstance(device, str):
         raise _Unreadable(device)
+    refused = refusal(device, path)
+    if refused:
+        raise _Unreadable(refused)
     note = reading_note(device, path)
     if note:
         messages.append(note)

@@ -19,7 +19,8 @@ declare(
 The file holds no device description: binary data (a NUL byte), nothing but blank space, text
 without a single `[section]` header, or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
 command refuses such a file with this one line and exit code 2, and never writes to it: a
-formatter that read it as an empty device would otherwise replace it with one.""",
+formatter that read it as an empty device would otherwise replace it with one. The line names what
+the file's name promised: a binary `device.xdd` is "not an XDD/XDC (CiA 311) file".""",
     "; whole file: device.eds\nIndex,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro",
     fixed="; file: device.eds\n[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
     "DefaultValue=0\nPDOMapping=0",

@@ -269,3 +269,23 @@ def test_unreadable_input_is_one_line_and_exit_2(pair: tuple[Path, Path], tmp_pa
     for bad in (tmp_path / "missing.eds", tmp_path):
         code, out, err = _invoke(old, bad, "--fail-on", "any")
         assert code == 2 and out == "" and err.count("\n") == 1, err
+
+
+def test_a_refused_xdd_is_one_line_and_exit_2(tmp_path: Path) -> None:
+    """XML that is not well-formed has no model: compared, every object would show as removed."""
+    from cantools_od import dumps, loads
+
+    whole = dumps(loads(BASE.encode(), source="device.eds"), fmt="xdd")
+    good, cut = tmp_path / "old" / "device.xdd", tmp_path / "new" / "device.xdd"
+    for path, data in ((good, whole), (cut, whole[: len(whole) // 2])):
+        path.parent.mkdir()
+        path.write_bytes(data)
+    (tmp_path / "old" / "io.eds").write_text(BASE)
+    (tmp_path / "new" / "io.eds").write_text(set_key(BASE, "2000sub2", "DefaultValue", "20"))
+    single = run("diff", good, cut)
+    assert single.returncode == 2 and single.stdout == "", single
+    assert single.stderr.count("\n") == 1 and "error: not well-formed XML" in single.stderr, single.stderr
+    assert single.stderr.startswith(f"{cut}:") and single.stderr.endswith("[XDD001]; nothing compared\n")
+    folders = run("diff", "old", "new", "--jobs", "1", cwd=tmp_path)  # every other pair is still reported
+    assert folders.returncode == 2 and "io.eds" in folders.stdout and "device.xdd" not in folders.stdout, folders
+    assert folders.stderr.startswith("new/device.xdd:") and folders.stderr.count("\n") == 1, folders.stderr

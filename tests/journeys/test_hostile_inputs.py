@@ -54,18 +54,23 @@ def run_on(folder: Path, command: str, name: str) -> list[str]:
     return []
 
 
+FAMILY = {"firmware.eds": "an EDS/DCF file", "firmware.xdd": "an XDD/XDC (CiA 311) file"}
+"""What the refusal says the file is not: what its name promised."""
+
+
+@pytest.mark.parametrize("name", sorted(FAMILY))
 @pytest.mark.parametrize("command", sorted(COMMANDS))
-def test_refusal_is_one_line_naming_the_reason(tmp_path: Path, command: str) -> None:
+def test_refusal_is_one_line_naming_the_reason(tmp_path: Path, command: str, name: str) -> None:
     if command == "import-table":
         pytest.skip("import-table reads vendor tables, not device descriptions")
-    (tmp_path / "firmware.eds").write_bytes(HOSTILE["binary.eds"])
-    ran = run(*args_for(command, "firmware.eds"), cwd=tmp_path)
+    (tmp_path / name).write_bytes(HOSTILE["binary.eds"])
+    ran = run(*args_for(command, name), cwd=tmp_path)
     assert ran.returncode == 2, ran
-    reason = "error: not an EDS/DCF file: binary data (a NUL byte on line 1) [EDS000]"
+    reason = f"error: not {FAMILY[name]}: binary data (a NUL byte on line 1) [EDS000]"
     if command.startswith("lint"):  # a finding in lint's report, like any other, in the format chosen
-        assert ran.stderr == "" and ran.stdout.startswith(f"firmware.eds:1:1: {reason}\n"), ran
+        assert ran.stderr == "" and ran.stdout.startswith(f"{name}:1:1: {reason}\n"), ran
         return
-    assert ran.stderr == f"firmware.eds: {reason}\n"
+    assert ran.stderr == f"{name}: {reason}\n"
 
 
 def test_unreadable_input(tmp_path: Path) -> None:

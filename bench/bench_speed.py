@@ -15,9 +15,9 @@ Rows (the load average is printed with each, as other jobs change what wall-cloc
   its size.
 - 1 MB and 16 MB synthetic `lint`: CPU, wall-clock, peak RSS and its ratio to the file size; CPU per MB after
   the start-up (`lint` of the small file), which is linear when the two agree within 20 %.
-- the corpus in one `lint` call with `--jobs 1` and with `--jobs 2`: wall-clock and the ratio of the two.
-- the revision histories (../shared/eds-history) as two folders, old and new, in one `diff` call with `--jobs 1`
-  and with `--jobs 2`.
+- the corpus in one `lint` call with `--jobs 1` and with `--jobs 2`, alternating (`--runs` pairs): wall-clock
+  medians and the median ratio.
+- the revision histories (../shared/eds-history) as two folders, old and new, in one `diff` call, the same way.
 """
 
 from __future__ import annotations
@@ -105,7 +105,42 @@ def process(name: str, args: list[str], rounds: int, size: int = 0) -> Row:
     }
     if size:
         row["rss_per_file_size"] = round(max(r[1] for r in runs) / size, 2)
+        row["size_mb"] = round(size / 1e6, 3)
     return row
+
+
+def parallel(name: str, args: list[str], rounds: int) -> Row:
+    """One command with `--jobs 1` and with `--jobs 2`, alternating for `rounds` pairs: wall-clock medians and
+    the median of the pairs' ratios (single runs of either disagree by more than the target's margin)."""
+    serial: list[float] = []
+    both: list[float] = []
+    for _ in range(rounds):
+        serial.append(_run_lean([*cli(), args[0], "--jobs", "1", *args[1:]])[0])
+        both.append(_run_lean([*cli(), args[0], "--jobs", "2", *args[1:]])[0])
+    return {
+        "row": f"{name} --jobs 2 against --jobs 1",
+        "jobs1_wall_s": round(statistics.median(serial), 3),
+        "jobs2_wall_s": round(statistics.median(both), 3),
+        "ratio": round(statistics.median(b / a for a, b in zip(serial, both, strict=True)), 3),
+        "load_average": _load_average(),
+    }
+
+
+def linearity(rows: list[Row]) -> Row:
+    """Wall-clock per MB of the 1 MB and 16 MB `lint` after the start-up (the small file's `lint`), and their ratio:
+    linear when it is within 1 +- 0.2."""
+    small = float(str(next(r["wall_s"] for r in rows if str(r["row"]) == f"lint {SMALL.name}")))
+    per_mb: list[float] = []
+    for label in ("1 MB", "16 MB"):
+        row = next(r for r in rows if r["row"] == f"lint synthetic {label}")
+        size_mb = float(str(row["size_mb"]))
+        per_mb.append((float(str(row["wall_s"])) - small) / size_mb)
+    return {
+        "row": "lint per MB after start-up, 1 MB and 16 MB",
+        "s_per_mb_1": round(per_mb[0], 3),
+        "s_per_mb_16": round(per_mb[1], 3),
+        "ratio": round(per_mb[1] / per_mb[0], 3),
+    }
 
 
 def history_folders(root: Path) -> int:
@@ -162,16 +197,14 @@ def main(argv: list[str] | None = None) -> int:
                 big.write_bytes(synthetic_eds(size))
                 add(process(f"lint synthetic {size // 1_000_000} MB", ["lint", str(big)], runs, big.stat().st_size))
                 big.unlink()
+            add(linearity(rows))
             names = [str(p) for p in corpus_files(args.corpus)]
-            for jobs in (1, 2):
-                add(
-                    process(f"lint corpus --jobs {jobs} ({len(names)} files)", ["lint", "--jobs", str(jobs), *names], 1)
-                )
+            add(parallel(f"lint corpus ({len(names)} files)", ["lint", *names], args.runs))
             releases = Path(folder) / "history"
             pairs = history_folders(releases)
-            for jobs in (1, 2) if pairs else ():
-                diff = ["diff", "--jobs", str(jobs), str(releases / "old"), str(releases / "new")]
-                add(process(f"diff history folders --jobs {jobs} ({pairs} pairs)", diff, 1))
+            if pairs:
+                history = ["diff", str(releases / "old"), str(releases / "new")]
+                add(parallel(f"diff history folders ({pairs} pairs)", history, args.runs))
     if args.json:
         print(json.dumps(rows, indent=2))
     return 0

@@ -242,6 +242,15 @@ def test_repeated_sections_written_plainly_are_merged() -> None:
     assert codes(device) == ["EDS002"]
 
 
+def test_a_repeat_found_late_is_merged_and_each_finding_reported_once() -> None:
+    # Read on the guess that no section name repeats, the last header proves it wrong: the reader starts again.
+    device = loads(b"[1000]\nParameterName=caf\xe9\nDataType=zz\n[2000]\nParameterName=A\n[ 1000 ]\nDefaultValue=1\n")
+    assert [(d.code, d.location.line) for d in device.diagnostics] == [("EDS100", 1), ("EDS002", 6), ("EDS030", 3)]
+    assert device.objects[0x1000].name == "caf\u00e9" and device.objects[0x2000].name == "A"
+    origin = device.objects[0x1000].origin
+    assert origin is not None and origin.where("DefaultValue") == (7, 1, 14)
+
+
 def test_sections_written_alike_keep_their_own_positions_and_spellings() -> None:
     section = "[{}]\nparametername=A\nDataType=0x0005\nAccessType={}\n"
     device = loads((section.format(2000, "xx") + "\n" + section.format(2001, "yy")).encode())

@@ -38,26 +38,55 @@ def config_option(function: click.decorators.FC) -> click.decorators.FC:
 
 
 def run_each(
-    work: Callable[[Item], Result], items: Sequence[Item], jobs: int | None, progress: Progress | None = None
+    work: Callable[[Item], Result],
+    items: Sequence[Item],
+    jobs: int | None,
+    progress: Progress | None = None,
+    cost: Callable[[Item], int] | None = None,
 ) -> list[Result]:
     """`work` on every item, in up to `jobs` processes (default: one a core), the results in the items' order.
-    One item, or one job, runs here: no process is started for it. `progress` counts the items as they end."""
+    One item, or one job, runs here: no process is started for it. `progress` counts the items as they end.
+    With `cost` (a guess of each item's work, such as its size), the costliest start first: a large file
+    left to the end would keep one process busy while the others wait."""
     workers = min(jobs or os.cpu_count() or 1, len(items))
-    results: list[Result] = []
     if workers <= 1:
+        results: list[Result] = []
         for item in items:
             results.append(work(item))
             _step(progress, item)
     else:
-        from concurrent.futures import ProcessPoolExecutor
-
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            for item, result in zip(items, pool.map(work, items), strict=True):
-                results.append(result)
-                _step(progress, item)
+        results = _in_processes(work, items, workers, progress, cost)
     if progress is not None:
         progress.clear()
     return results
+
+
+def _in_processes(
+    work: Callable[[Item], Result],
+    items: Sequence[Item],
+    workers: int,
+    progress: Progress | None,
+    cost: Callable[[Item], int] | None,
+) -> list[Result]:
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    order = sorted(range(len(items)), key=lambda i: -cost(items[i])) if cost else range(len(items))
+    ended: dict[int, Result] = {}
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        futures = {pool.submit(work, items[i]): i for i in order}
+        for future in as_completed(futures):
+            index = futures[future]
+            ended[index] = future.result()
+            _step(progress, items[index])
+    return [ended[i] for i in range(len(items))]
+
+
+def file_size(path: str) -> int:
+    """A file's size as the cost of its work; 0 when it cannot be read (it then fails fast)."""
+    try:
+        return os.stat(path).st_size
+    except (OSError, ValueError):
+        return 0
 
 
 def _step(progress: Progress | None, item: object) -> None:

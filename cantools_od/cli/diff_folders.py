@@ -16,7 +16,7 @@ from typing import NoReturn
 import click
 
 from ..model import Device
-from .batch import run_each
+from .batch import file_size, run_each
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, device_or_reason
 from .diff import NULL_DEVICE, found_in, missing_side, read_pins, reading_note, refusal, render
 
@@ -73,7 +73,7 @@ def run(old: str, new: str, options: Options, jobs: int | None, color: bool | No
     if not found:
         click.echo(f"error: no device description ({', '.join(FOLDER_SUFFIXES)}) under {old} or {new}", err=True)
         sys.exit(EXIT_USAGE)
-    outcomes = run_each(partial(compare_pair, options), found, jobs, Progress("diff", len(found)))
+    outcomes = run_each(partial(compare_pair, options), found, jobs, Progress("diff", len(found)), cost=_pair_size)
     reports = [outcome.report for outcome in outcomes if outcome.report]
     for outcome in outcomes:
         for message in outcome.messages:
@@ -85,6 +85,10 @@ def run(old: str, new: str, options: Options, jobs: int | None, color: bool | No
     if any(outcome.failed for outcome in outcomes):
         sys.exit(EXIT_USAGE)
     sys.exit(EXIT_FINDINGS if any(outcome.found for outcome in outcomes) else EXIT_OK)
+
+
+def _pair_size(pair: Pair) -> int:
+    return file_size(pair.old) + file_size(pair.new)
 
 
 def _json_array(reports: list[str]) -> str:

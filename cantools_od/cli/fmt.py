@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from .batch import config_option, config_path, jobs_option, run_each
+from .batch import config_option, config_path, file_size, jobs_option, run_each
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
 
 if TYPE_CHECKING:
@@ -49,7 +49,7 @@ def command(
             sys.exit(EXIT_USAGE)
     worst = EXIT_OK
     progress = Progress("fmt", len(tasks)) if len(tasks) > 1 else None
-    for done in run_each(_format, tasks, jobs, progress):
+    for done in run_each(_format, tasks, jobs, progress, cost=lambda task: file_size(task.name)):
         sys.stdout.write(done.out)
         sys.stdout.flush()
         for line in done.err:

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import click
 
-from .batch import config_option, config_path, jobs_option, run_each
+from .batch import config_option, config_path, file_size, jobs_option, run_each
 from .canopennode import load_stack_config, stack_config_option
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
 
@@ -93,7 +93,7 @@ def command(
         if name not in buses
     ]
     progress = Progress("lint", len(tasks)) if len(tasks) > 1 else None
-    checked = run_each(_check, tasks, 1 if network else jobs, progress)
+    checked = run_each(_check, tasks, 1 if network else jobs, progress, cost=lambda task: file_size(task.name))
     findings += [finding for one in checked for finding in one.findings]
     for one in checked:
         if one.message:

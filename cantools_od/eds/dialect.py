@@ -63,11 +63,15 @@ class DialectEvidence:
 
 
 def _lely(section: IniSection) -> bool:
-    name = section.name.lower()
-    if _MAPPING_SECTION.match(name) and any(e.key.lower() == "compactsubobj" for e in section.entries):
-        return True
-    return name == "deviceinfo" and any(
-        e.key.lower() == "vendorname" and "lely" in e.value.lower() for e in section.entries
+    name = section.name  # tested by length first: this runs once per section of a file
+    if len(name) == 4:
+        return _MAPPING_SECTION.match(name) is not None and any(
+            e.key.lower() == "compactsubobj" for e in section.entries
+        )
+    return (
+        len(name) == 10
+        and name.lower() == "deviceinfo"
+        and any(e.key.lower() == "vendorname" and "lely" in e.value.lower() for e in section.entries)
     )
 
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 from ..collector import paused
@@ -47,17 +47,13 @@ STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group 
 
 def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: bool | None = None) -> Device:
     with paused():  # the model is acyclic: collector passes over its many small objects only cost time
-        repeated = ini.repeated_section_names(data)
+        storage = STORAGE_MARK in data
         try:
-            report = Report(file)
-            markers = may_hold_markers(data)
-            device = _build(utf8_pieces(data), repeated, report, file, STORAGE_MARK in data, markers)
+            device = _read_twice_if_repeated(lambda: utf8_pieces(data), data, file, storage)
         except UnicodeDecodeError:  # read again as a whole, in the fallback encoding
-            report = Report(file)
             text, encoding_note = decode(data)
-            report.warning("EDS100", encoding_note or "not UTF-8", 1, 1)
-            markers = may_hold_markers(text)
-            device = _build([text], ini.repeated_section_names(text), report, file, STORAGE_MARK in data, markers)
+            note = encoding_note or "not UTF-8"
+            device = _read_twice_if_repeated(lambda: [text], text, file, storage, note)
         if dcf is not None:
             device.is_dcf = dcf
         elif file.lower().endswith(".dcf"):
@@ -68,6 +64,31 @@ def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: boo
         return device
 
 
+class _Repeated(Exception):
+    """A section name given again, met while reading on the guess that none is."""
+
+
+def _read_twice_if_repeated(
+    pieces: Callable[[], Iterable[str]], text: str | bytes, file: str, storage: bool, encoding_note: str = ""
+) -> Device:
+    """The device read from `pieces()` on the guess that no section name is given twice (no real file seen so far
+    gives one); when one is, read again, holding back every repeated name to merge its sections first. Finding
+    them all beforehand would cost a search of the whole text, a twentieth of reading it."""
+    markers = may_hold_markers(text)
+    try:
+        return _build(pieces(), None, _report(file, encoding_note), file, storage, markers)
+    except _Repeated:
+        repeated = ini.repeated_section_names(text)
+        return _build(pieces(), repeated, _report(file, encoding_note), file, storage, markers)
+
+
+def _report(file: str, encoding_note: str) -> Report:
+    report = Report(file)
+    if encoding_note:
+        report.warning("EDS100", encoding_note, 1, 1)
+    return report
+
+
 class _Build:
     """One file's sections turned into the model as they are read, so that the text's sections need
     not all be held at once: a large file costs its model, not its model and its parse besides.
@@ -76,16 +97,23 @@ class _Build:
     read before their object. Values whose form depends on what is only known at the end (the
     dialect, a DEFTYPE alias) are typed at the end; all others at once."""
 
-    def __init__(self, device: Device, report: Report, repeated: set[str]) -> None:
+    def __init__(self, device: Device, report: Report, repeated: set[str] | None) -> None:
         self.device = device
         self.report = report
-        self.repeated = repeated
+        self.repeated = repeated  # None: none guessed; a name given again raises _Repeated
+        # While none is guessed: the names of sections that are no object or sub-object read so far (objects and
+        # sub-objects read are found in the model), and the sub-objects held back for want of their object.
+        self.seen: set[str] = set()
+        self.orphaned: set[tuple[int, int]] = set()
         self.held: dict[str, ini.IniSection] = {}  # repeated names, first section, later ones merged in
         self.orphans: list[tuple[int, int, ini.IniSection]] = []  # sub-objects read before their object
         self.compact: list[tuple[int, str, ini.IniSection]] = []
         self.deferred: list[tuple[Object, SubObject | None, Collected]] = []
 
     def add(self, section: ini.IniSection) -> None:
+        if self.repeated is None:
+            self.read(section)
+            return
         name = section.name.lower()
         if name in self.repeated:
             earlier = self.held.get(name)
@@ -112,8 +140,11 @@ class _Build:
     def read(self, section: ini.IniSection) -> None:
         device, report = self.device, self.report
         _check_header(section, report)
+        guessing = self.repeated is None
         match = _OBJECT_SECTION.match(section.name)
         if match is None:
+            if guessing:
+                self.first_time(section)
             _read_file_section(device, section, report)
             return
         index = int(match.group(1), 16)
@@ -121,17 +152,27 @@ class _Build:
             subindex = int(match.group(2), 16)
             parent = device.objects.get(index)
             if subindex > 0xFF:
+                if guessing:
+                    self.first_time(section)
                 report.error(
                     "EDS103", f"[{section.name}]: sub-index above FFh; kept as text", section.line, section.column
                 )
                 device.other_sections.append(raw_section(section, report))
             elif parent is None:
+                if guessing:
+                    self.first_orphan(index, subindex)
                 self.orphans.append((index, subindex, section))
             else:
+                if guessing and (subindex in parent.subs or (index, subindex) in self.orphaned):
+                    raise _Repeated
                 self.read_sub(parent, subindex, section)
         elif match.group(3) is not None:
+            if guessing:
+                self.first_time(section)
             self.compact.append((index, match.group(3).lower(), section))
         else:
+            if guessing and index in device.objects:
+                raise _Repeated
             collected = collect(section, keys.OBJECT_KEYS, report)
             fields = collected.shared_fields()
             fields["index"] = index
@@ -139,6 +180,19 @@ class _Build:
             obj = assemble(Object, fields, _OBJECT_DEFAULTS)
             device.objects[index] = obj
             self.type_or_defer(obj, None, collected)
+
+    def first_time(self, section: ini.IniSection) -> None:
+        """Raise _Repeated when a section of this name was read before (names folded as
+        `ini.repeated_section_names` folds them)."""
+        folded = section.name.strip().lower()
+        if folded in self.seen:
+            raise _Repeated
+        self.seen.add(folded)
+
+    def first_orphan(self, index: int, subindex: int) -> None:
+        if (index, subindex) in self.orphaned:
+            raise _Repeated
+        self.orphaned.add((index, subindex))
 
     def read_sub(self, parent: Object, subindex: int, section: ini.IniSection) -> None:
         collected = collect(section, keys.OBJECT_KEYS, self.report)
@@ -171,7 +225,7 @@ class _Build:
 
 
 def _build(
-    pieces: Iterable[str], repeated: set[str], report: Report, file: str, storage: bool, markers: bool = True
+    pieces: Iterable[str], repeated: set[str] | None, report: Report, file: str, storage: bool, markers: bool = True
 ) -> Device:
     """The device; `storage`: the text may hold CANopenNode's storage-group comments (see storage.py); `markers`:
     it may hold dialect evidence besides keys (see dialect.may_hold_markers)."""

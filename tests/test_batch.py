@@ -1,0 +1,32 @@
+"""`run_each`, the runner of `lint`, `fmt --check` and `diff` over many files: results in the order given, the
+costliest items started first."""
+
+from __future__ import annotations
+
+import time
+
+from cantools_od.cli.batch import file_size, run_each
+
+
+def _started(item: int) -> tuple[int, float]:
+    """The item and when its work began; each takes a while, so that a third item waits for a free process."""
+    began = time.monotonic()
+    time.sleep(0.3)
+    return item, began
+
+
+def test_results_keep_the_given_order_and_the_costliest_start_first() -> None:
+    items = [1, 2, 3, 4, 50, 60]
+    results = run_each(_started, items, jobs=2, cost=lambda item: item)
+    assert [item for item, _ in results] == items
+    began = dict(results)
+    assert max(began[50], began[60]) < min(began[i] for i in (1, 2, 3, 4)) - 0.15, began
+
+
+def test_one_job_runs_here_in_order() -> None:
+    assert [item for item, _ in run_each(_started, [3, 1, 2], jobs=1, cost=lambda item: item)] == [3, 1, 2]
+
+
+def test_file_size_of_what_cannot_be_read_is_nothing() -> None:
+    assert file_size("/nonexistent/device.eds") == 0
+    assert file_size("bad\0name.eds") == 0

@@ -3,9 +3,10 @@ costliest items started first."""
 
 from __future__ import annotations
 
+import os
 import time
 
-from cantools_od.cli.batch import file_size, run_each
+from cantools_od.cli.batch import SMALL_WORK, file_size, run_each
 
 
 def _started(item: int) -> tuple[int, float]:
@@ -30,3 +31,15 @@ def test_one_job_runs_here_in_order() -> None:
 def test_file_size_of_what_cannot_be_read_is_nothing() -> None:
     assert file_size("/nonexistent/device.eds") == 0
     assert file_size("bad\0name.eds") == 0
+
+
+def _pid(item: int) -> int:
+    return os.getpid()
+
+
+def test_by_default_small_work_stays_in_this_process() -> None:
+    """Starting processes would cost more than they save: under SMALL_WORK in all, none is started by default."""
+    here = os.getpid()
+    assert set(run_each(_pid, [1, 2, 3], jobs=None, cost=lambda item: SMALL_WORK // 4)) == {here}
+    assert here not in run_each(_pid, [1, 2, 3], jobs=None, cost=lambda item: SMALL_WORK)  # enough work for processes
+    assert here not in run_each(_pid, [1, 2], jobs=2, cost=lambda item: 1)  # --jobs given: as asked

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..model import AccessType, Device, NodeIdExpr, Object, ObjectKind, Origin, SubObject
-from ..model.assemble import construct
+from ..model.assemble import construct, fresh
 from ..model.cia301.cobid import VALID
 from ..model.cia301.pdo import (
     COMM_BASE,
@@ -32,19 +32,24 @@ def implicit_sub_name(parent: Object, subindex: int) -> str:
 
 
 def implicit_sub(parent: Object, subindex: int) -> SubObject:
-    """The sub-object CompactSubObj implies at `subindex` of `parent`."""
+    """The sub-object CompactSubObj implies at `subindex` of `parent`: of values the parent's fields already typed,
+    so made without validation (which costs more than the rest of reading a sub-object, and at its first use in a
+    process builds the class's schema and loads pydantic's plugins: 30 ms)."""
     if subindex == 0:
-        return SubObject(
-            name=NR_OF_OBJECTS, data_type=UNSIGNED8.index, access=AccessType.RO, pdo_mapping=False,
-            default=parent.compact_sub_obj, implicit=True,
-        )  # fmt: skip
-    return SubObject(
-        name=implicit_sub_name(parent, subindex),
-        data_type=parent.data_type,
-        access=parent.access,
-        pdo_mapping=parent.pdo_mapping,
-        default=parent.default,
-        implicit=True,
+        return fresh(SubObject, {
+            "name": NR_OF_OBJECTS, "data_type": UNSIGNED8.index, "access": AccessType.RO, "pdo_mapping": False,
+            "default": parent.compact_sub_obj, "implicit": True,
+        })  # fmt: skip
+    return fresh(
+        SubObject,
+        {
+            "name": implicit_sub_name(parent, subindex),
+            "data_type": parent.data_type,
+            "access": parent.access,
+            "pdo_mapping": parent.pdo_mapping,
+            "default": parent.default,
+            "implicit": True,
+        },
     )
 
 
@@ -116,7 +121,7 @@ _COMPACT_KEYS = {"name": "ParameterName", "value": "ParameterValue", "denotation
 def _locate(sub: SubObject, section: ini.IniSection, kind: str, entry: ini.Entry, file: str) -> None:
     """An implicit sub-object's value is written in [xxxxName/Value/Denotation]: findings about it go there."""
     if sub.origin is None:
-        sub.origin = Origin(file=file, line=section.line, column=section.column)
+        sub.origin = fresh(Origin, {"file": file, "line": section.line, "column": section.column})
     # a new dict: origins built by the reader may share one empty dict
     sub.origin.keys = {**sub.origin.keys, _COMPACT_KEYS[kind]: (entry.line, entry.key_col, entry.value_col)}
 
@@ -172,32 +177,30 @@ def _comm_object(index: int, mask: int, cob_id: int | NodeIdExpr, direction: str
     for subindex, (name, dtype) in COMM_SUBS.items():
         if mask & (1 << (subindex - 1)):
             default: int | NodeIdExpr = {1: cob_id, 2: 0xFF}.get(subindex, 0)
-            subs[subindex] = SubObject(name=name, data_type=dtype, access=AccessType.RW, default=default, implicit=True)
-    subs[0] = SubObject(
-        name="Highest sub-index supported", data_type=UNSIGNED8.index, access=AccessType.RO,
-        default=max(subs, default=0), implicit=True,
-    )  # fmt: skip
+            subs[subindex] = _implied(name, dtype, AccessType.RW, default)
+    subs[0] = _implied("Highest sub-index supported", UNSIGNED8.index, AccessType.RO, max(subs, default=0))
     kind = "RPDO" if direction == RX else "TPDO"
-    return Object(
-        index=index, name=f"{kind} communication parameter", object_type=ObjectKind.RECORD,
-        subs=dict(sorted(subs.items())), implicit=True,
-    )  # fmt: skip
+    return fresh(Object, {
+        "index": index, "name": f"{kind} communication parameter", "object_type": ObjectKind.RECORD,
+        "subs": dict(sorted(subs.items())), "implicit": True,
+    })  # fmt: skip
 
 
 def _mapping_object(index: int, direction: str) -> Object:
     kind = "RPDO" if direction == RX else "TPDO"
-    subs = {
-        0: SubObject(
-            name="Number of mapped objects", data_type=UNSIGNED8.index, access=AccessType.RW, default=0, implicit=True
-        )
-    }
+    subs = {0: _implied("Number of mapped objects", UNSIGNED8.index, AccessType.RW, 0)}
     for subindex in range(1, MAX_ENTRIES + 1):
-        subs[subindex] = SubObject(
-            name=f"Mapped object {subindex}", data_type=MAPPING_ENTRY_TYPE, access=AccessType.RW, default=0,
-            implicit=True,
-        )  # fmt: skip
-    return Object(
-        index=index, name=f"{kind} mapping parameter", object_type=ObjectKind.RECORD, subs=subs, implicit=True
+        subs[subindex] = _implied(f"Mapped object {subindex}", MAPPING_ENTRY_TYPE, AccessType.RW, 0)
+    return fresh(Object, {
+        "index": index, "name": f"{kind} mapping parameter", "object_type": ObjectKind.RECORD, "subs": subs,
+        "implicit": True,
+    })  # fmt: skip
+
+
+def _implied(name: str, data_type: int, access: AccessType, default: int | NodeIdExpr) -> SubObject:
+    """A sub-object CompactPDO implies, of values known to be of the right types (see `implicit_sub`)."""
+    return fresh(
+        SubObject, {"name": name, "data_type": data_type, "access": access, "default": default, "implicit": True}
     )
 
 

@@ -17,6 +17,7 @@ from ..model.cia301.pdo import (
     count_pdos,
 )
 from ..model.datatypes import UNSIGNED8
+from ..model.plain import plain
 from . import ini
 from .keys import Kind, is_decimal, list_number
 from .report import Report
@@ -209,8 +210,8 @@ _COMPACT_SECTIONS = {"name", "parameter_value", "denotation", "comments"}  # wha
 
 def compact_form_holds(parent: Object, subindex: int, sub: SubObject) -> bool:
     """Whether CompactSubObj and its [xxxxName/Value/Denotation] sections still say all of `sub`."""
-    implied = implicit_sub(parent, subindex).model_dump(exclude=_COMPACT_SECTIONS | {"origin"})
-    return sub.model_dump(exclude=_COMPACT_SECTIONS | {"origin"}) == implied
+    left_out = _COMPACT_SECTIONS | {"origin"}
+    return plain(sub, left_out) == plain(implicit_sub(parent, subindex), left_out)
 
 
 def implied_pdo_objects(device: Device) -> dict[int, Object]:
@@ -222,4 +223,4 @@ def implied_pdo_objects(device: Device) -> dict[int, Object]:
 
 
 def same_object(a: Object, b: Object) -> bool:
-    return a.model_dump(exclude={"origin"}) == b.model_dump(exclude={"origin"})
+    return plain(a, ("origin",)) == plain(b, ("origin",))

@@ -73,7 +73,7 @@ def _read_twice_if_repeated(
 ) -> Device:
     """The device read from `pieces()` on the guess that no section name is given twice (no real file seen so far
     gives one); when one is, read again, holding back every repeated name to merge its sections first. Finding
-    them all beforehand would cost a search of the whole text, a twentieth of reading it."""
+    them all beforehand would cost a search of the whole text, about 6 % of reading it."""
     markers = may_hold_markers(text)
     try:
         return _build(pieces(), None, _report(file, encoding_note), file, storage, markers)

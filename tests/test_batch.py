@@ -43,3 +43,18 @@ def test_by_default_small_work_stays_in_this_process() -> None:
     assert set(run_each(_pid, [1, 2, 3], jobs=None, cost=lambda item: SMALL_WORK // 4)) == {here}
     assert here not in run_each(_pid, [1, 2, 3], jobs=None, cost=lambda item: SMALL_WORK)  # enough work for processes
     assert here not in run_each(_pid, [1, 2], jobs=2, cost=lambda item: 1)  # --jobs given: as asked
+
+
+def test_batches_start_with_the_costliest_and_stay_small() -> None:
+    """Items travel to the processes in batches (a round trip each): never more than an eighth of a process's
+    share of the items or of the cost, the costliest first, every item once."""
+    from cantools_od.cli.batch import _batches
+
+    sizes = [5] * 90 + [400, 300, 10, 10, 10, 10, 1000]
+    batches = _batches(sizes, 2, lambda size: size)
+    assert sorted(i for batch in batches for i in batch) == list(range(len(sizes)))
+    assert [sizes[i] for i in batches[0]] == [1000] and [sizes[i] for i in batches[1]] == [400]
+    most, limit = len(sizes) // 16, sum(sizes) // 16
+    assert all(len(batch) <= most and sum(sizes[i] for i in batch[:-1]) < limit for batch in batches)
+    assert len(batches) < len(sizes) // 2  # the small ones share round trips
+    assert _batches(sizes, 2, None) == [[i] for i in range(len(sizes))]

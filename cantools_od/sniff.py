@@ -19,6 +19,7 @@ _UTF16_BOMS = (b"\xff\xfe", b"\xfe\xff")
 _BLANK = b" \t\r\n\x0c\x0b"
 _SECTION = re.compile(rb"^[ \t]*\[", re.MULTILINE)
 _XML_SUFFIXES = (".xdd", ".xdc", ".xpd", ".xml")
+_XML_FILE = "an XDD/XDC (CiA 311) file"
 
 
 class NotADeviceDescription(ValueError):
@@ -60,7 +61,11 @@ def sniff(data: bytes, name: str = "") -> Kind:
 def _expected(name: str) -> str:
     """What a file of this name was meant to be, for a refusal that content alone decides: a binary
     `device.xdd` is no XDD/XDC file, whatever the EDS reader would have said."""
-    return "an XDD/XDC (CiA 311) file" if name.lower().endswith(_XML_SUFFIXES) else "an EDS/DCF file"
+    return _XML_FILE if _named_xml(name) else "an EDS/DCF file"
+
+
+def _named_xml(name: str) -> bool:
+    return name.lower().endswith(_XML_SUFFIXES)
 
 
 def _is_json_array(data: bytes) -> bool:
@@ -81,5 +86,5 @@ def has_section(data: bytes) -> bool:
 
 def xml_refusal(name: str) -> NotADeviceDescription:
     """XML handed to the EDS/DCF reader."""
-    what = "an XDD/XDC (CiA 311) file" if name.lower().endswith(_XML_SUFFIXES) else "XML"
+    what = _XML_FILE if _named_xml(name) else "XML"
     return NotADeviceDescription(f"{what}; this reader takes CiA 306 EDS/DCF text")

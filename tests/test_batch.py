@@ -51,10 +51,10 @@ def test_batches_start_with_the_costliest_and_stay_small() -> None:
     from cantools_od.cli.batch import _batches
 
     sizes = [5] * 90 + [400, 300, 10, 10, 10, 10, 1000]
-    batches = _batches(sizes, 2, lambda size: size)
+    batches = _batches(len(sizes), 2, sizes)
     assert sorted(i for batch in batches for i in batch) == list(range(len(sizes)))
     assert [sizes[i] for i in batches[0]] == [1000] and [sizes[i] for i in batches[1]] == [400]
     most, limit = len(sizes) // 16, sum(sizes) // 16
     assert all(len(batch) <= most and sum(sizes[i] for i in batch[:-1]) < limit for batch in batches)
     assert len(batches) < len(sizes) // 2  # the small ones share round trips
-    assert _batches(sizes, 2, None) == [[i] for i in range(len(sizes))]
+    assert _batches(len(sizes), 2, None) == [[i] for i in range(len(sizes))]

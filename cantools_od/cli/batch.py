@@ -54,7 +54,8 @@ def run_each(
     counts the items as they end. With `cost` (a guess of each item's work, such as its size), the costliest start
     first: a large file left to the end would keep one process busy while the others wait."""
     workers = min(jobs or os.cpu_count() or 1, len(items))
-    if jobs is None and cost is not None and sum(map(cost, items)) < SMALL_WORK:
+    costs = [cost(item) for item in items] if cost is not None else None  # a stat per file: asked once
+    if jobs is None and costs is not None and sum(costs) < SMALL_WORK:
         workers = 1
     if workers <= 1:
         results: list[Result] = []
@@ -62,7 +63,7 @@ def run_each(
             results.append(work(item))
             _step(progress, item)
     else:
-        results = _in_processes(work, items, workers, progress, cost)
+        results = _in_processes(work, items, workers, progress, costs)
     if progress is not None:
         progress.clear()
     return results
@@ -73,14 +74,14 @@ def _in_processes(
     items: Sequence[Item],
     workers: int,
     progress: Progress | None,
-    cost: Callable[[Item], int] | None,
+    costs: list[int] | None,
 ) -> list[Result]:
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     ended: dict[int, Result] = {}
     with ProcessPoolExecutor(max_workers=workers) as pool:
         futures = {
-            pool.submit(_each, work, [items[i] for i in batch]): batch for batch in _batches(items, workers, cost)
+            pool.submit(_each, work, [items[i] for i in batch]): batch for batch in _batches(len(items), workers, costs)
         }
         for future in as_completed(futures):
             for index, result in zip(futures[future], future.result(), strict=True):
@@ -89,18 +90,17 @@ def _in_processes(
     return [ended[i] for i in range(len(items))]
 
 
-def _batches(items: Sequence[Item], workers: int, cost: Callable[[Item], int] | None) -> list[list[int]]:
+def _batches(count: int, workers: int, costs: list[int] | None) -> list[list[int]]:
     """The items' indices, costliest first, in batches: a process takes a batch at a time, as each item sent alone
     costs a round trip between the processes (about half a millisecond). A batch holds at most an eighth of a
     process's share of the items and of the cost, so that no process is left working alone at the end."""
-    if cost is None:
-        return [[i] for i in range(len(items))]
-    costs = [cost(item) for item in items]
-    most, limit = max(1, len(items) // (workers * 8)), sum(costs) // (workers * 8)
+    if costs is None:
+        return [[i] for i in range(count)]
+    most, limit = max(1, count // (workers * 8)), sum(costs) // (workers * 8)
     batches: list[list[int]] = []
     batch: list[int] = []
     held = 0
-    for index in sorted(range(len(items)), key=lambda i: -costs[i]):
+    for index in sorted(range(count), key=lambda i: -costs[i]):
         batch.append(index)
         held += costs[index]
         if len(batch) >= most or held >= limit:

@@ -186,13 +186,13 @@ def reading_note(device: Device, name: str) -> str:
 def refusal(device: Device, name: str) -> str:
     """Why no side can be made of the device, "" when one can: the reader refused the file (XML that is not
     well-formed, hostile or not CiA 311), so no model of it exists and every object would show as removed."""
-    from ..xdd import REFUSED_CODES
+    from ..xdd import refusal as reader_refusal
 
-    for found in device.diagnostics:
-        if found.code in REFUSED_CODES:
-            where = found.location
-            return f"{name}:{where.line}:{where.column}: error: {found.message} [{found.code}]; nothing compared"
-    return ""
+    found = reader_refusal(device)
+    if found is None:
+        return ""
+    where = found.location  # named as the user named the file: under --git its file is a temporary copy
+    return f"{name}:{where.line}:{where.column}: error: {found.message} [{found.code}]; nothing compared"
 
 
 def _note_errors(device: Device, name: str) -> None:

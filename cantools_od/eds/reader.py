@@ -143,8 +143,7 @@ class _Build:
         guessing = self.repeated is None
         match = _OBJECT_SECTION.match(section.name)
         if match is None:
-            if guessing:
-                self.first_time(section)
+            self.first_time(section)
             _read_file_section(device, section, report)
             return
         index = int(match.group(1), 16)
@@ -152,23 +151,20 @@ class _Build:
             subindex = int(match.group(2), 16)
             parent = device.objects.get(index)
             if subindex > 0xFF:
-                if guessing:
-                    self.first_time(section)
+                self.first_time(section)
                 report.error(
                     "EDS103", f"[{section.name}]: sub-index above FFh; kept as text", section.line, section.column
                 )
                 device.other_sections.append(raw_section(section, report))
             elif parent is None:
-                if guessing:
-                    self.first_orphan(index, subindex)
+                self.first_orphan(index, subindex)
                 self.orphans.append((index, subindex, section))
             else:
                 if guessing and (subindex in parent.subs or (index, subindex) in self.orphaned):
                     raise _Repeated
                 self.read_sub(parent, subindex, section)
         elif match.group(3) is not None:
-            if guessing:
-                self.first_time(section)
+            self.first_time(section)
             self.compact.append((index, match.group(3).lower(), section))
         else:
             if guessing and index in device.objects:
@@ -182,14 +178,19 @@ class _Build:
             self.type_or_defer(obj, None, collected)
 
     def first_time(self, section: ini.IniSection) -> None:
-        """Raise _Repeated when a section of this name was read before (names folded as
-        `ini.repeated_section_names` folds them)."""
+        """While none is guessed repeated: raise _Repeated when a section of this name was read before (names
+        folded as `ini.repeated_section_names` folds them)."""
+        if self.repeated is not None:
+            return
         folded = section.name.strip().lower()
         if folded in self.seen:
             raise _Repeated
         self.seen.add(folded)
 
     def first_orphan(self, index: int, subindex: int) -> None:
+        """`first_time` for a sub-object held back for want of its object."""
+        if self.repeated is not None:
+            return
         if (index, subindex) in self.orphaned:
             raise _Repeated
         self.orphaned.add((index, subindex))

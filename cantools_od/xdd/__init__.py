@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from ..model import Device
+    from ..model import Device, Diagnostic
 
 # Codes after which no model of the file exists: not XML, hostile XML, too large, not CiA 311.
 REFUSED_CODES = ("XDD001", "XDD002", "XDD003", "XDD004")
@@ -20,7 +20,12 @@ RAW_PREFIX = "XDD."
 
 def refused(device: Device) -> bool:
     """Whether the reader refused the file: nothing read from it may replace it or stand for it."""
-    return any(d.code in REFUSED_CODES for d in device.diagnostics)
+    return refusal(device) is not None
+
+
+def refusal(device: Device) -> Diagnostic | None:
+    """The reader's diagnostic that refused the file, None when it read one."""
+    return next((d for d in device.diagnostics if d.code in REFUSED_CODES), None)
 
 
 def is_xml(data: bytes) -> bool:

@@ -30,20 +30,23 @@ def _defines(values: tuple[str, ...]) -> dict[str, str]:
 
 
 def load_network(
-    bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...], keep_going: bool = False
+    bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...], keep_going: bool = False, cogen: bool = True
 ) -> tuple[Network, dict[str, Device]]:
     """The network and each slave's device; any failure is one line and exit 2. Errors in reading a
-    node's file refuse the network, unless `keep_going` (then they are printed and the rest goes on)."""
+    node's file refuse the network, unless `keep_going` (then they are printed and the rest goes on).
+    The description's warnings (keys without effect where they stand) are printed."""
     from ..api import load
     from ..network.read import read_network
     from ..network.yamltree import NetworkError
     from ..sniff import NotADeviceDescription
 
     try:
-        network = read_network(bus, _defines(defines), [Path(d) for d in dcf_dirs])
+        network = read_network(bus, _defines(defines), [Path(d) for d in dcf_dirs], cogen)
     except NetworkError as error:
         click.echo(str(error), err=True)
         sys.exit(EXIT_USAGE)
+    for warning in network.warnings:
+        click.echo(warning, err=True)
     devices: dict[str, Device] = {}
     for slave in network.slaves:
         where = f"{bus}:{slave.line_of('dcf')}"
@@ -97,6 +100,11 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
     type=click.Path(file_okay=False),
     help="Also look for nodes' `dcf` files here.",
 )
+@click.option(
+    "--no-cogen",
+    is_flag=True,
+    help="Read `defaults`/`nodes` as written (a node's key over `defaults`, file order), not as ros2_canopen's cogen.",
+)
 @click.option("--no-parameter-values", is_flag=True, help="Do not write the DCFs' ParameterValues at boot (as dcfgen).")
 @click.option("-r", "--remote-pdo", is_flag=True, help="Also write lely's remote PDO objects (dcfgen -r).")
 @click.option("--no-node-dcf", is_flag=True, help="Do not write a DCF per node.")
@@ -115,6 +123,7 @@ def command(
     outdir: str | None,
     defines: tuple[str, ...],
     dcf_dirs: tuple[str, ...],
+    no_cogen: bool,
     no_parameter_values: bool,
     remote_pdo: bool,
     no_node_dcf: bool,
@@ -134,7 +143,7 @@ def command(
             "cantools-od network: error: nothing to do: give -o OUTDIR, --load or --dbc FILE (see --help)", err=True
         )
         sys.exit(EXIT_USAGE)
-    network, devices = load_network(bus, defines, dcf_dirs, keep_going)
+    network, devices = load_network(bus, defines, dcf_dirs, keep_going, cogen=not no_cogen)
     plan = make_plan(network, devices, not no_parameter_values)
     failed = False
     if check:

@@ -318,7 +318,7 @@ def _bus_senders(plan: NetworkPlan) -> dict[int, list[_Sender]]:
             add(pdo.cob_id, _Sender("the master", f"its mirror of {name}'s {pdo.name}", pdo.line or line, pdo))
         add(HEARTBEAT_BASE + node, _Sender(name, "heartbeat", slave.slave.line_of("node_id")))
         add(SDO_TX_BASE + node, _Sender(name, "SDO response", slave.slave.line_of("node_id")))
-        emcy = slave.value(COB_ID_EMCY, 0) if slave.has(COB_ID_EMCY, 0) else EMCY_BASE + node
+        emcy = slave.cob_id(COB_ID_EMCY, 0) if slave.has(COB_ID_EMCY, 0) else EMCY_BASE + node
         if not emcy & VALID:
             add(emcy, _Sender(name, "EMCY", slave.slave.line_of("node_id")))
     return senders

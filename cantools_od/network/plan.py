@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 
 from ..model import Device, NodeIdExpr, ValueKind, Variable
 from ..model.cia301.cobid import PREDEFINED, VALID
+from ..model.cia301.connections import predefined_cob_base
 from ..model.cia301.master import EXPECTED_SOFTWARE, REVISION_NUMBER, SERIAL_NUMBER
 from ..model.cia301.objects import (
     COB_ID_TIME,
@@ -135,6 +136,14 @@ class SlavePlan:
     def value(self, index: int, sub: int) -> int:
         found = slot(self.device, index, sub)
         return (as_int(found.var.value(self.node_id)) or 0) if found is not None else 0
+
+    def cob_id(self, index: int, sub: int) -> int:
+        """A COB-ID entry as the slave holds it; one the file gives no value takes its pre-defined
+        connection set value (CiA 301: EMCY 80h + node-ID), not 000h, which is NMT's."""
+        found = slot(self.device, index, sub)
+        held = as_int(found.var.value(self.node_id)) if found is not None else None
+        base = predefined_cob_base(index, sub)
+        return base + self.node_id if held is None and base is not None else held or 0
 
 
 @dataclass

@@ -58,9 +58,10 @@ def load_network(
         except NotADeviceDescription as error:
             click.echo(f"{where}: error: {slave.name}: {slave.dcf_file}: {error}", err=True)
             sys.exit(EXIT_USAGE)
-        problem = errors_to_fix(device)
+        problem = errors_to_fix(device) or _repeated_section(device)
         if problem and keep_going:
-            report(device.diagnostics, minimum=Severity.ERROR)
+            if not report(device.diagnostics, minimum=Severity.ERROR):
+                click.echo(f"{where}: warning: {slave.name}: {slave.dcf_file}: {problem}", err=True)
         elif problem:
             click.echo(
                 f"{where}: error: {slave.name}: {slave.dcf_file}: {problem} (cantools-od lint; --keep-going)", err=True
@@ -68,6 +69,16 @@ def load_network(
             sys.exit(EXIT_USAGE)
         devices[slave.name] = device
     return network, devices
+
+
+def _repeated_section(device: Device) -> str | None:
+    """A section written twice (EDS002): the reader merges its keys, but which the device holds is not
+    known, so the network is refused, as dcfgen refuses such a file."""
+    for diagnostic in device.diagnostics:
+        if diagnostic.code == "EDS002" and diagnostic.message.startswith("section ["):
+            line = diagnostic.location.line
+            return f"line {line}: {diagnostic.message.split(';')[0]}: which one the device holds is unknown"
+    return None
 
 
 def make_plan(network: Network, devices: dict[str, Device], parameter_values: bool) -> NetworkPlan:
@@ -83,6 +94,17 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
         for warning in slave.warnings:
             click.echo(warning, err=True)
     return plan
+
+
+def _remove(paths: list[Path]) -> None:
+    """The files an earlier run wrote that this one does not (a node left the bus); each removal is said."""
+    for path in paths:
+        try:
+            path.unlink()
+        except OSError as error:
+            click.echo(f"{path}: warning: not removed, though no longer written: {error.strerror}", err=True)
+        else:
+            click.echo(f"{path}: removed (written by an earlier run, no longer part of the network)", err=True)
 
 
 @click.command(name="network")
@@ -157,16 +179,21 @@ def command(
             click.echo(f"{bus}: error: the network has errors: nothing written (--no-check writes anyway)", err=True)
             sys.exit(EXIT_FINDINGS)
     files: dict[Path, bytes] = {}
+    removed: list[Path] = []
     if outdir is not None:
-        from ..network.outputs import outputs
+        from ..network.outputs import MANIFEST, manifest, outputs, stale
 
-        files.update(outputs(plan, Path(outdir), node_dcfs=not no_node_dcf, remote_pdo=remote_pdo))
+        generated = outputs(plan, Path(outdir), node_dcfs=not no_node_dcf, remote_pdo=remote_pdo)
+        removed = stale(Path(outdir), generated)
+        files.update(generated)
+        files[Path(outdir) / MANIFEST] = manifest(generated)
     if dbc is not None:
         from ..network.dbc import network_dbc
 
         files[Path(dbc)] = network_dbc(plan)
     if files:
         write_outputs(files)
+    _remove(removed)
     if show_load:
         from ..network.load import bus_load, format_load
 

@@ -269,16 +269,17 @@ class _Sender(NamedTuple):
 
 def lint_bus(plan: NetworkPlan) -> list[Finding]:
     """COB011 findings about a planned network (node-IDs, CAN-ID producers, PDO feeds and layouts,
-    heartbeats, SYNC), each at the line of the bus description that causes it."""
+    heartbeats, SYNC), each at the line of the bus description that causes it; shared node-IDs first."""
     file = plan.network.file
-    findings = [*_bus_node_ids(plan, file)]
-    findings.extend(_bus_finding(file, line, message) for slave in plan.slaves for line, message in slave.problems)
+    causes = sorted(_bus_node_ids(plan, file), key=lambda f: f.location.line)
+    findings = [_bus_finding(file, line, message) for slave in plan.slaves for line, message in slave.problems]
     senders = _bus_senders(plan)
     findings.extend(_bus_collisions(senders, file))
     findings.extend(_bus_consumers(plan, senders, file))
     findings.extend(_bus_heartbeats(plan, file))
     findings.extend(_bus_sync(plan, file))
-    return sorted(findings, key=lambda f: (f.location.line, f.message))
+    # a shared node-ID first: the CAN-ID clashes of its heartbeat, SDO and EMCY follow from it
+    return causes + sorted(findings, key=lambda f: (f.location.line, f.message))
 
 
 def _bus_finding(file: str, line: int, message: str, severity: Severity = Severity.ERROR) -> Finding:

@@ -34,6 +34,29 @@ from .plan import NetworkPlan, PlannedPdo, SlavePlan, Write, device_type
 Section = tuple[str, list[tuple[str, object]]]
 
 
+MANIFEST = ".cantools-od-network"
+"""The list of files `network -o` wrote into a folder: on the next run, those it no longer writes
+(a node removed from the bus) are removed, and nothing else there is touched."""
+
+
+def manifest(files: dict[Path, bytes]) -> bytes:
+    names = sorted(path.name for path in files)
+    return (
+        "# written by cantools-od network; removed from here when no longer written\n" + "\n".join(names) + "\n"
+    ).encode()
+
+
+def stale(outdir: Path, files: dict[Path, bytes]) -> list[Path]:
+    """The files an earlier run wrote into `outdir` (its manifest) that this run does not write."""
+    try:
+        listed = (outdir / MANIFEST).read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return []
+    written = {path.name for path in files} | {MANIFEST}
+    names = [name for name in listed if name and not name.startswith("#") and name not in written]
+    return [outdir / name for name in names if Path(name).name == name and (outdir / name).is_file()]
+
+
 def concise(writes: list[Write]) -> bytes:
     return m.concise_dcf(write.as_tuple() for write in writes)
 

@@ -138,3 +138,71 @@ def test_an_unknown_key_stays_an_error_with_did_you_mean(folder: Path) -> None:
     result = run("bus.yml", "-o", "out", cwd=folder)
     assert result.returncode == 2 and not (folder / "out").exists()
     assert result.stderr == "bus.yml:3: error: unknown key 'baud_rate' in master; did you mean baudrate?\n"
+
+
+DRIVE = (EXAMPLES / "cia402_drive.eds").read_text()
+STATUSWORD = DRIVE[DRIVE.index("[6041]\n") : DRIVE.index("[6060]\n")]
+
+
+def test_an_eds_with_a_section_written_twice_is_refused(folder: Path) -> None:
+    """`[6041]` twice, the second UNSIGNED32: which the device has is unknown; dcfgen refuses it too."""
+    twice = STATUSWORD.replace("DataType=0x0006", "DataType=0x0007")
+    assert twice != STATUSWORD
+    (folder / "cia402_drive.eds").write_text(DRIVE.replace("[6060]\n", twice + "[6060]\n", 1))
+    line = DRIVE.index("[6060]\n")
+    first, again = DRIVE[: DRIVE.index("[6041]\n")].count("\n") + 1, DRIVE[:line].count("\n") + 1
+    (folder / "bus.yml").write_text("master:\n  node_id: 1\ndrive:\n  node_id: 2\n  dcf: cia402_drive.eds\n")
+    before = (folder / "cia402_drive.eds").read_bytes()
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    assert result.returncode == 2 and result.stderr.count("\n") == 1 and not (folder / "out").exists()
+    assert result.stderr.startswith("bus.yml:5: error: drive: ")
+    assert f"line {again}: section [6041] given again (first on line {first}): which one" in result.stderr
+    assert (folder / "cia402_drive.eds").read_bytes() == before
+
+
+def test_a_node_removed_from_the_bus_loses_its_files_and_nothing_else(folder: Path) -> None:
+    two = (
+        "master:\n  node_id: 1\nio_a:\n  node_id: 2\n  dcf: io_device.eds\nio_b:\n  node_id: 3\n  dcf: io_device.eds\n"
+    )
+    (folder / "bus.yml").write_text(two)
+    assert run("bus.yml", "-o", "out", cwd=folder).returncode == 0
+    assert (folder / "out" / "io_b.dcf").is_file()
+    (folder / "out" / "notes.txt").write_text("mine")
+    (folder / "bus.yml").write_text(two.split("io_b:")[0])
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    assert result.returncode == 0, result.stderr
+    names = sorted(p.name for p in (folder / "out").iterdir())
+    assert {".cantools-od-network", "io_a.dcf", "master.dcf", "notes.txt"} <= set(names)
+    assert not [name for name in names if name.startswith("io_b")], names
+    assert "out/io_b.dcf: removed" in result.stderr
+
+
+def test_a_shared_node_id_comes_before_the_clashes_it_causes(folder: Path) -> None:
+    bus = (
+        "master:\n  node_id: 1\nio_a:\n  dcf: io_device.eds\n  node_id: 2\nio_b:\n  dcf: io_device.eds\n  node_id: 2\n"
+    )
+    (folder / "bus.yml").write_text(
+        bus.replace("io_b:\n  dcf: io_device.eds", "io_b:\n  tpdo: {1: {transmission: 1}}\n  dcf: io_device.eds")
+    )
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    lines = result.stderr.splitlines()
+    assert result.returncode == 1 and len(lines) > 2, result.stderr
+    assert lines[0] == "bus.yml:9:1: error: io_b: node-ID 2 is also io_a's [COB011]"
+    assert any("sends CAN-ID" in line for line in lines[1:])
+
+
+def test_the_same_sdo_write_twice_is_a_warning(folder: Path) -> None:
+    """A real bus.yml writes 6083h twice, commented as acceleration and deceleration (6084h was meant)."""
+    sdo = (
+        "  sdo:\n"
+        "    - {index: 0x6083, sub_index: 0, value: 16000}   # acceleration\n"
+        "    - {index: 0x6083, sub_index: 0, value: 16000}   # deceleration\n"
+    )
+    master = "master:\n  node_id: 1\n  sync_period: 10000\n"
+    (folder / "bus.yml").write_text(master + "drive:\n  node_id: 2\n  dcf: cia402_drive.eds\n" + sdo)
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    assert result.returncode == 0
+    assert result.stderr == (
+        "bus.yml:9: warning: drive: 6083sub0 is written again (first on line 8): the later value stays; "
+        "another object meant?\n"
+    )

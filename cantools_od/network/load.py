@@ -118,6 +118,16 @@ def pdo_bits(pdo: PlannedPdo, nominal: int, data_rate: int) -> int:
     return math.ceil(fd_frame_time(size, nominal, data_rate, extended) * nominal / 1000)
 
 
+def pdo_period(pdo: PlannedPdo, sync_period: int) -> int | None:
+    """The cycle of a PDO sent cyclically in µs (transmission 1-240: every n-th SYNC; 254/255 with an
+    event timer: the timer), None for one sent on events, on request or acyclically."""
+    if 1 <= pdo.transmission <= SYNC_LAST:
+        return pdo.transmission * sync_period or None
+    if pdo.transmission > max(RTR_ONLY) and pdo.direction == TX and pdo.event_timer:
+        return pdo.event_timer * 1000
+    return None
+
+
 def _pdo_frame(pdo: PlannedPdo, who: str, sync_hz: float, rates: tuple[int, int]) -> Frame | str:
     """The PDO's frame and rate, or why it is not counted."""
     name = f"{who} {pdo.name} ({pdo.cob_id & BASE_29BIT:03X}h)"

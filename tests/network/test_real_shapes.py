@@ -206,3 +206,40 @@ def test_the_same_sdo_write_twice_is_a_warning(folder: Path) -> None:
         "bus.yml:9: warning: drive: 6083sub0 is written again (first on line 8): the later value stays; "
         "another object meant?\n"
     )
+
+
+DBC_BUS = """\
+master:
+  node_id: 1
+  sync_period: 10000
+drive:
+  node_id: 2
+  dcf: cia402_drive.eds
+  tpdo:
+    1: {transmission: 2, mapping: [{index: 0x6041, sub_index: 0}]}
+    2: {transmission: 255, event_timer: 50, mapping: [{index: 0x6064, sub_index: 0}]}
+io:
+  node_id: 3
+  dcf: io_device.eds
+  tpdo: {1: {enabled: false}, 2: {enabled: false}}
+"""
+
+
+def test_dbc_names_receivers_and_cycle_times(folder: Path) -> None:
+    """A node that only receives is in BU_; SYNC and cyclic PDOs carry GenMsgCycleTime (read back by cantools)."""
+    import cantools
+
+    (folder / "bus.yml").write_text(DBC_BUS)
+    result = run("bus.yml", "--dbc", "bus.dbc", cwd=folder)
+    assert result.returncode == 0, result.stderr
+    database = cantools.database.load_file(str(folder / "bus.dbc"))
+    assert [node.name for node in database.nodes] == ["master", "drive", "io"]
+    io_rpdo = database.get_message_by_name("io_RPDO1")
+    assert io_rpdo.senders == ["master"] and {r for s in io_rpdo.signals for r in s.receivers} == {"io"}
+    assert io_rpdo.cycle_time is None  # event-driven
+    tpdo1 = database.get_message_by_name("drive_TPDO1")
+    assert tpdo1.cycle_time == 20 and all(s.receivers == ["master"] for s in tpdo1.signals)  # every 2nd SYNC
+    assert database.get_message_by_name("drive_TPDO2").cycle_time == 50  # its event timer
+    sync = database.get_message_by_frame_id(0x80)
+    assert sync.name == "SYNC" and sync.senders == ["master"] and sync.cycle_time == 10
+    assert 'BA_ "GenMsgCycleTime" BO_ 128 10;' in (folder / "bus.dbc").read_text()

@@ -42,3 +42,32 @@ def ros2_build(bus: Path, out: Path, install: str, scratch: Path) -> subprocess.
     flat.write_text(source.read_text(encoding="utf-8").replace("@BUS_CONFIG_PATH@", install), encoding="utf-8")
     args = [str(tool("dcfgen")), "-d", str(out), "-rS", str(flat)]
     return subprocess.run(args, capture_output=True, text=True, cwd=bus.parent, timeout=120)
+
+
+def mirrored_cobs(master_dcf: str) -> set[int]:
+    """The COB-IDs of the master's mirrored PDOs (the DefaultValue after each `COB-ID used by` name)."""
+    lines = master_dcf.splitlines()
+    found = set()
+    for number, line in enumerate(lines):
+        if line.startswith("ParameterName=COB-ID used by"):
+            value = next(v for v in lines[number:] if v.startswith("DefaultValue="))
+            found.add(int(value.split("=", 1)[1], 0))
+    return found
+
+
+PREDEFINED_BASES = {"tpdo": 0x180, "rpdo": 0x200}
+
+
+def disabled_cobs(bus: Path) -> set[int]:
+    """The pre-defined COB-IDs of the PDOs (1-4) the YAML disables (`enabled: false`), read as cogen
+    expands it (defaults over each node): dcfgen still mirrors them, we do not."""
+    data = yaml.safe_load(bus.read_text(encoding="utf-8"))
+    nodes = data.get("nodes") or {k: v for k, v in data.items() if isinstance(v, dict) and "dcf" in v}
+    found = set()
+    for node in nodes.values():
+        merged = {**node, **(data.get("defaults") or {})} if "nodes" in data else node
+        for direction, base in PREDEFINED_BASES.items():
+            for number, pdo in (merged.get(direction) or {}).items():
+                if pdo.get("enabled") is False and int(number) <= 4:
+                    found.add(base + 0x100 * (int(number) - 1) + int(merged["node_id"]))
+    return found

@@ -20,7 +20,6 @@ from pathlib import Path
 import mirrors
 import pytest
 import ros2build
-import yaml
 
 from cantools_od.model.cia301.master import read_concise_dcf
 
@@ -64,30 +63,6 @@ def dcfgen(bus: Path, out: Path) -> subprocess.CompletedProcess[str]:
     return ros2build.ros2_build(bus, out, INSTALLED, out.parent.parent)
 
 
-def mirrored_cobs(master_dcf: str) -> set[int]:
-    """The COB-IDs of the master's mirrored PDOs (the DefaultValue after each `COB-ID used by` name)."""
-    lines = master_dcf.splitlines()
-    found = set()
-    for number, line in enumerate(lines):
-        if line.startswith("ParameterName=COB-ID used by"):
-            value = next(v for v in lines[number:] if v.startswith("DefaultValue="))
-            found.add(int(value.split("=", 1)[1], 0))
-    return found
-
-
-def disabled_cobs(bus: Path) -> set[int]:
-    """The pre-defined COB-IDs of the TPDOs the YAML disables, which dcfgen still mirrors."""
-    data = yaml.safe_load(bus.read_text())
-    nodes = data.get("nodes") or {k: v for k, v in data.items() if isinstance(v, dict) and "dcf" in v}
-    found = set()
-    for node in nodes.values():
-        merged = {**(data.get("defaults") or {}), **node}
-        for number, pdo in (merged.get("tpdo") or {}).items():
-            if pdo.get("enabled") is False and number <= 4:
-                found.add(0x180 + 0x100 * (number - 1) + merged["node_id"])
-    return found
-
-
 def configs(root: Path) -> list[Path]:
     return sorted((root / CONFIGS).glob("*/bus.yml"))
 
@@ -119,9 +94,9 @@ def test_every_example_generates_and_matches_dcfgen(checkout: Path, tmp_path: Pa
             assert mine == read_concise_dcf((their_dir / binary).read_bytes()), f"{name}/{binary}"
         mine_dcf, their_dcf = (mine_dir / "master.dcf").read_text(), (their_dir / "master.dcf").read_text()
         if mine_dcf != their_dcf:  # dcfgen mirrors a PDO the YAML disables (`enabled: false`); we do not
-            extra = mirrored_cobs(their_dcf) - mirrored_cobs(mine_dcf)
-            assert mirrored_cobs(mine_dcf) <= mirrored_cobs(their_dcf), name
-            assert extra and {cob & 0x7FF for cob in extra} <= disabled_cobs(bus), name
+            extra = ros2build.mirrored_cobs(their_dcf) - ros2build.mirrored_cobs(mine_dcf)
+            assert ros2build.mirrored_cobs(mine_dcf) <= ros2build.mirrored_cobs(their_dcf), name
+            assert extra and {cob & 0x7FF for cob in extra} <= ros2build.disabled_cobs(bus), name
         agreed.append(name)
     # All ten examples with their EDS files: dcfgen accepts every one of them once cogen has expanded them.
     assert len(agreed) + len(dcfgen_failed) == len(configs(checkout)) - len(MISSING_EDS) == 10

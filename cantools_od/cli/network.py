@@ -81,7 +81,11 @@ def _repeated_section(device: Device) -> str | None:
     return None
 
 
-def make_plan(network: Network, devices: dict[str, Device], parameter_values: bool) -> NetworkPlan:
+def make_plan(
+    network: Network, devices: dict[str, Device], parameter_values: bool, notes_on_stderr: bool = True
+) -> NetworkPlan:
+    """The plan; its warnings are printed on stderr, what the master checks of each slave at boot on
+    stderr too (`lint --network`, whose report is stdout) or on stdout (`network`)."""
     from ..network.plan import plan_network
     from ..network.yamltree import NetworkError
 
@@ -90,9 +94,15 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
     except NetworkError as error:
         click.echo(str(error), err=True)
         sys.exit(EXIT_USAGE)
+    from ..network.boot import explain
+
     for slave in plan.slaves:
         for warning in slave.warnings:
             click.echo(warning, err=True)
+    for slave in plan.slaves:
+        who = f"{slave.slave.name} (node-ID {slave.node_id})"
+        for line in explain(slave.checks, who, f"{network.file}:{slave.slave.line}"):
+            click.echo(line, err=notes_on_stderr)
     return plan
 
 
@@ -166,7 +176,7 @@ def command(
         )
         sys.exit(EXIT_USAGE)
     network, devices = load_network(bus, defines, dcf_dirs, keep_going, cogen=not no_cogen)
-    plan = make_plan(network, devices, not no_parameter_values)
+    plan = make_plan(network, devices, not no_parameter_values, notes_on_stderr=False)
     failed = False
     if check:
         from ..lint.network import lint_bus

@@ -29,7 +29,7 @@ from ..model.cia301.objects import (
 from ..model.cia301.pdo import dummy_type, is_dummy_index
 from ..model.cia301.slots import slot
 from ..model.datatypes import STANDARD_TYPES
-from .plan import NetworkPlan, PlannedPdo, SlavePlan, Write, device_type
+from .plan import NetworkPlan, PlannedPdo, SlavePlan, Write
 
 Section = tuple[str, list[tuple[str, object]]]
 
@@ -385,15 +385,13 @@ def _manager(plan: NetworkPlan, configured: bool, software: bool) -> Iterator[Se
     assignment = {slave.node_id: _assignment(plan, slave) for slave in plan.slaves}
     yield from _array(f"{m.SLAVE_ASSIGNMENT:04X}", U32, "rw", 127, assignment, title="NMT slave assignment")
     yield from _array(f"{m.REQUEST_NMT:04X}", U8, "rw", 127, None, title="Request NMT")
-    types = {s.node_id: device_type(s) for s in plan.slaves if device_type(s)}
-    yield from _array(f"{m.DEVICE_TYPE_IDENTIFICATION:04X}", U32, "rw", 127, types, title="Device type identification")
-    vendors = {s.node_id: s.identity(IDENTITY_VENDOR_ID) for s in plan.slaves if s.identity(IDENTITY_VENDOR_ID)}
-    yield from _array(f"{m.VENDOR_IDENTIFICATION:04X}", U32, "rw", 127, vendors, title="Vendor identification")
-    products = {
-        s.node_id: s.identity(IDENTITY_PRODUCT_CODE)
-        for s in plan.slaves
-        if s.identity(IDENTITY_PRODUCT_CODE) and s.has(IDENTITY, IDENTITY_PRODUCT_CODE)
-    }
+    for index, title in (
+        (m.DEVICE_TYPE_IDENTIFICATION, "Device type identification"),
+        (m.VENDOR_IDENTIFICATION, "Vendor identification"),
+    ):
+        values = {s.node_id: s.checked(index) for s in plan.slaves if s.checked(index)}
+        yield from _array(f"{index:04X}", U32, "rw", 127, values, title=title)
+    products = {s.node_id: s.checked(m.PRODUCT_CODE) for s in plan.slaves if s.checked(m.PRODUCT_CODE)}
     yield from _array(f"{m.PRODUCT_CODE:04X}", U32, "rw", 127, products, title="Product code")
     yield from _array(f"{m.REVISION_NUMBER:04X}", U32, "rw", 127, None, title="Revision_number")
     yield from _array(f"{m.SERIAL_NUMBER:04X}", U32, "rw", 127, None, title="Serial number")

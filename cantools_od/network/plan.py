@@ -23,14 +23,10 @@ from ..model.cia301.objects import (
     COB_ID_TIME,
     COMM_BASE,
     CONSUMER_HEARTBEAT,
-    DEVICE_TYPE,
     ERROR_BEHAVIOR,
     GUARD_TIME,
     IDENTITY,
-    IDENTITY_PRODUCT_CODE,
-    IDENTITY_REVISION,
     IDENTITY_SERIAL,
-    IDENTITY_VENDOR_ID,
     LIFE_TIME_FACTOR,
     MAP_BASE,
     MAX_ENTRIES,
@@ -42,6 +38,7 @@ from ..model.cia301.objects import (
 from ..model.cia301.pdo import dummy_type, is_dummy_index
 from ..model.cia301.slots import as_int, slot
 from ..model.datatypes import UNSIGNED32, DataType
+from .boot import BootCheck, boot_checks
 from .model import Master, Network, PdoConfig, Slave
 from .yamltree import NetworkError
 
@@ -111,24 +108,15 @@ class SlavePlan:
     warnings: list[str] = field(default_factory=list)
     problems: list[tuple[int, str]] = field(default_factory=list)
     """(line, message) of each `sdo` entry the master could not write: left out, reported by the checks."""
+    checks: list[BootCheck] = field(default_factory=list)
+    """The identity values the master checks at boot (1F84h-1F88h)."""
+
+    def checked(self, index: int) -> int:
+        """The value the master's `index` (1F84h-1F88h) holds for this slave; 0: not checked."""
+        return next((check.value for check in self.checks if check.index == index), 0)
 
     def active(self, direction: str) -> list[PlannedPdo]:
         return [pdo for pdo in self.pdos if pdo.direction == direction and pdo.active and pdo.signals]
-
-    def identity(self, sub: int) -> int:
-        found = slot(self.device, IDENTITY, sub)
-        value = as_int(found.var.value(self.node_id)) if found is not None else None
-        info = self.device.device_info
-        from_info = {
-            IDENTITY_VENDOR_ID: info.vendor_number,
-            IDENTITY_PRODUCT_CODE: info.product_number,
-            IDENTITY_REVISION: info.revision_number,
-        }.get(sub)
-        if sub == IDENTITY_REVISION and self.slave.revision_number is not None:
-            return self.slave.revision_number
-        if sub == IDENTITY_SERIAL and self.slave.serial_number is not None:
-            return self.slave.serial_number
-        return from_info if from_info is not None else (value or 0)  # DeviceInfo over 1018h, as dcfgen
 
     def has(self, index: int, sub: int) -> bool:
         return slot(self.device, index, sub) is not None
@@ -258,6 +246,7 @@ def _plan_slave(
     network: Network, slave: Slave, device: Device, next_cob: list[int], parameter_values: bool
 ) -> SlavePlan:
     plan = SlavePlan(slave, device, node_id_of(slave, device, network.file))
+    plan.checks = boot_checks(device, plan.node_id, slave, network.file)
     parameter_values = parameter_values and device.is_dcf  # an EDS's values are what the device holds
     state = _Slave(plan, network.file, parameter_values)
     configured = _configured_pdos(state) if parameter_values else {}
@@ -600,14 +589,7 @@ def _master_writes(master: Master, slaves: list[SlavePlan]) -> list[Write]:
         node = plan.node_id
         if plan.slave.software_version:
             writes.append(Write(EXPECTED_SOFTWARE, node, encode(UNSIGNED32, plan.slave.software_version, "software")))
-        revision = plan.identity(IDENTITY_REVISION)
-        if revision and plan.has(IDENTITY, IDENTITY_REVISION):
-            writes.append(Write(REVISION_NUMBER, node, encode(UNSIGNED32, revision, "revision")))
-        serial = plan.identity(IDENTITY_SERIAL)
-        if serial and plan.has(IDENTITY, IDENTITY_SERIAL):
-            writes.append(Write(SERIAL_NUMBER, node, encode(UNSIGNED32, serial, "serial")))
+        for index in (REVISION_NUMBER, SERIAL_NUMBER):  # the checks master.dcf does not carry: written at boot
+            if plan.checked(index):
+                writes.append(Write(index, node, encode(UNSIGNED32, plan.checked(index), f"{index:04X}h")))
     return writes
-
-
-def device_type(plan: SlavePlan) -> int:
-    return plan.value(DEVICE_TYPE, 0)

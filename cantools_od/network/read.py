@@ -117,6 +117,7 @@ BELONGS = {
 }
 """Where each key of a bus description takes effect: one written elsewhere is ignored by dcfgen (and
 ros2_canopen), so it is a warning naming where it belongs, not an error."""
+NODE_IDENTITY_HINT = "; a node's vendor-ID and product code the master checks at boot come from its file only"
 
 
 class _Reader:
@@ -163,7 +164,10 @@ class _Reader:
             convert = keys.get(name)
             elsewhere = [where for other, (where, valid) in BELONGS.items() if other != kind and name in valid]
             if convert is None and kind and elsewhere:
-                self.warn(line, f"{what}: {name} has no effect here (dcfgen ignores it); it belongs {elsewhere[0]}")
+                hint = NODE_IDENTITY_HINT if kind == "node" and name in ("vendor_id", "product_code") else ""
+                self.warn(
+                    line, f"{what}: {name} has no effect here (dcfgen ignores it); it belongs {elsewhere[0]}{hint}"
+                )
                 continue
             if convert is None:
                 valid = set(keys) | passed

@@ -243,3 +243,42 @@ def test_dbc_names_receivers_and_cycle_times(folder: Path) -> None:
     sync = database.get_message_by_frame_id(0x80)
     assert sync.name == "SYNC" and sync.senders == ["master"] and sync.cycle_time == 10
     assert 'BA_ "GenMsgCycleTime" BO_ 128 10;' in (folder / "bus.dbc").read_text()
+
+
+def test_boot_checks_say_what_the_master_checks_and_how_to_relax_it(folder: Path) -> None:
+    """The top question of ros2_canopen's users, "1018:03 differs from 1F87": each identity value the master
+    checks at boot, where it comes from, and how to relax it."""
+    bus = "master:\n  node_id: 1\n  sync_period: 10000\ndrive:\n  node_id: 2\n  dcf: cia402_drive.eds\n"
+    bus += "  revision_number: 0x20000\n  vendor_id: 0\n"
+    (folder / "bus.yml").write_text(bus)
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == (
+        "bus.yml:8: warning: drive: vendor_id has no effect here (dcfgen ignores it); it belongs in `master`; "
+        "a node's vendor-ID and product code the master checks at boot come from its file only\n"
+    )
+    assert result.stdout.splitlines() == [
+        "bus.yml:5: note: drive (node-ID 2): at boot the master checks (a mismatch stops the node's boot):",
+        "  1F84h device type 0x00020192, from cia402_drive.eds 1000h; "
+        "to relax: bus.yml cannot relax it (dcfgen has no key for it): 0 in the node's file",
+        "  1F85h vendor-ID 0x00000CA7, from cia402_drive.eds [DeviceInfo] VendorNumber; "
+        "to relax: bus.yml cannot relax it (dcfgen has no key for it): 0 in the node's file",
+        "  1F86h product code 0x00000402, from cia402_drive.eds [DeviceInfo] ProductNumber; "
+        "to relax: bus.yml cannot relax it (dcfgen has no key for it): 0 in the node's file",
+        "  1F87h revision number 0x00020000, from bus.yml:7 revision_number (the node's cia402_drive.eds "
+        "[DeviceInfo] RevisionNumber says 0x00010000); to relax: `revision_number: 0` in the node's section",
+    ]
+    assert (0x1F87, 2, (0x20000).to_bytes(4, "little")) in read_concise_dcf(
+        (folder / "out" / "master.bin").read_bytes()
+    )
+    master = (folder / "out" / "master.dcf").read_text()
+    assert (
+        "[1F85Value]\nNrOfEntries=1\n2=0x00000CA7\n" in master
+        and "[1F84Value]\nNrOfEntries=1\n2=0x00020192\n" in master
+    )
+    lint = subprocess.run([*cli_command(), "lint", "--network", "bus.yml"], capture_output=True, text=True, cwd=folder)
+    assert lint.returncode == 0 and result.stdout in lint.stderr
+    (folder / "bus.yml").write_text(bus.replace("revision_number: 0x20000", "revision_number: 0"))
+    relaxed = run("bus.yml", "-o", "relaxed", cwd=folder)
+    assert relaxed.returncode == 0 and "1F87h" not in relaxed.stdout and "1F86h" in relaxed.stdout
+    assert not (folder / "relaxed" / "master.bin").exists()  # nothing left for the master to write to itself

@@ -106,6 +106,21 @@ def make_plan(
     return plan
 
 
+def _bus_copy(bus: str, target: str) -> Path:
+    """Where --write-bus goes: never over the description being read."""
+    path = Path(target)
+    if path.exists() and path.resolve() == Path(bus).resolve():
+        click.echo(f"cantools-od network: error: --write-bus {target} is the bus description itself", err=True)
+        sys.exit(EXIT_USAGE)
+    return path
+
+
+def _expanded(bus: str, defines: tuple[str, ...]) -> bytes:
+    from ..network.cogen import expanded
+
+    return expanded(Path(bus).read_text(encoding="utf-8"), _defines(defines)).encode("utf-8")
+
+
 def _remove(paths: list[Path]) -> None:
     """The files an earlier run wrote that this one does not (a node left the bus); each removal is said."""
     for path in paths:
@@ -148,6 +163,11 @@ def _remove(paths: list[Path]) -> None:
     "--threshold", type=click.FloatRange(1, 100), default=70.0, show_default=True, help="Warn above this load (%)."
 )
 @click.option("--dbc", type=click.Path(dir_okay=False), help="Write every PDO of the network as a DBC file.")
+@click.option(
+    "--write-bus",
+    type=click.Path(dir_okay=False),
+    help="Also write BUS as ros2_canopen's build installs it (cogen's expansion, placeholders replaced).",
+)
 @click.option("--keep-going", is_flag=True, help="Go on despite errors in reading the nodes' files (printed).")
 @click.option("--check/--no-check", default=True, show_default=True, help="Refuse a network the checks find errors in.")
 def command(
@@ -163,6 +183,7 @@ def command(
     data_bitrate: int | None,
     threshold: float,
     dbc: str | None,
+    write_bus: str | None,
     keep_going: bool,
     check: bool,
 ) -> None:
@@ -170,9 +191,11 @@ def command(
     configuration: master.dcf, one concise DCF (<node>.bin, CiA 302-3) per slave the master
     configures at boot, and one DCF per node. All files or none. Exit 0, 1 with load above the
     threshold or network errors, 2 when BUS cannot be turned into a network."""
-    if outdir is None and not show_load and dbc is None:
+    if outdir is None and not show_load and dbc is None and write_bus is None:
         click.echo(
-            "cantools-od network: error: nothing to do: give -o OUTDIR, --load or --dbc FILE (see --help)", err=True
+            "cantools-od network: error: nothing to do: give -o OUTDIR, --load, --dbc FILE or --write-bus FILE"
+            " (see --help)",
+            err=True,
         )
         sys.exit(EXIT_USAGE)
     network, devices = load_network(bus, defines, dcf_dirs, keep_going, cogen=not no_cogen)
@@ -201,6 +224,8 @@ def command(
         from ..network.dbc import network_dbc
 
         files[Path(dbc)] = network_dbc(plan)
+    if write_bus is not None:
+        files[_bus_copy(bus, write_bus)] = _expanded(bus, defines)
     if files:
         write_outputs(files)
     _remove(removed)

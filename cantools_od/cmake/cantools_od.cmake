@@ -250,3 +250,5 @@ function(_cantools_od_canopennode target eds out work od_name command options de
 endfunction()
 
 cmake_policy(POP)
+
+include("${_cantools_od_module_dir}/cantools_od_bus.cmake") # cantools_od_bus(<bus>): ros2_canopen's cogen_dcf

@@ -109,7 +109,7 @@ def test_at_least_ten_repositories() -> None:
 def test_real_network_against_ros2_canopens_build(net: Net, tmp_path: Path) -> None:
     bus = checkout(net, tmp_path / "src")
     before = bus.read_bytes()
-    result = ours(bus, tmp_path / "ours")
+    result = ours(bus, tmp_path / "ours", "--write-bus", str(tmp_path / "installed.yml"))
     assert bus.read_bytes() == before
     theirs = ros2build.ros2_build(bus, tmp_path / "ros2", INSTALLED, tmp_path)
     if net.refused:
@@ -123,6 +123,8 @@ def test_real_network_against_ros2_canopens_build(net: Net, tmp_path: Path) -> N
     ]
     assert all(warning in result.stderr for warning in net.warnings), result.stderr
     assert theirs.returncode == 0, theirs.stderr
+    # the bus.yml ros2_canopen installs beside master.dcf (cogen's expansion, the path replaced)
+    assert (tmp_path / "installed.yml").read_text() == (tmp_path / "ros2" / "bus.yml").read_text()
     mine, built = bins(tmp_path / "ours"), bins(tmp_path / "ros2")
     if PARAMETER_VALUES in net.differences:
         _parameter_values(bus, mine, built, tmp_path)

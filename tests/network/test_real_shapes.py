@@ -282,3 +282,18 @@ def test_boot_checks_say_what_the_master_checks_and_how_to_relax_it(folder: Path
     relaxed = run("bus.yml", "-o", "relaxed", cwd=folder)
     assert relaxed.returncode == 0 and "1F87h" not in relaxed.stdout and "1F86h" in relaxed.stdout
     assert not (folder / "relaxed" / "master.bin").exists()  # nothing left for the master to write to itself
+
+
+def test_a_node_beside_nodes_is_not_built_as_cogen_drops_it(folder: Path) -> None:
+    bus = "master:\n  node_id: 1\nlonely:\n  node_id: 4\n  dcf: io_device.eds\nnodes:\n  io:\n    node_id: 3\n"
+    (folder / "bus.yml").write_text(bus + "    dcf: io_device.eds\n")
+    result = run("bus.yml", "-o", "out", cwd=folder)
+    assert result.returncode == 0
+    assert (
+        result.stderr == "bus.yml:4: warning: lonely: ros2_canopen's cogen keeps only `nodes`: this node is not built\n"
+    )
+    assert "[1F81Value]\nNrOfEntries=1\n3=" in (folder / "out" / "master.dcf").read_text()  # node 4 not assigned
+    assert not (folder / "out" / "lonely.dcf").exists()
+    kept = run("bus.yml", "-o", "kept", "--no-cogen", cwd=folder)
+    assert kept.returncode == 0 and kept.stderr == "" and (folder / "kept" / "lonely.dcf").is_file()
+    assert "[1F81Value]\nNrOfEntries=2\n4=" in (folder / "kept" / "master.dcf").read_text()

@@ -15,6 +15,12 @@ import yaml
 _PLACEHOLDER = re.compile(r"@([A-Za-z_][A-Za-z0-9_]*)@")
 
 
+def with_defaults(node: Mapping[Any, Any], defaults: Mapping[Any, Any]) -> dict[Any, Any]:
+    """A node as cogen expands it: each key of `defaults` copied over the node's own
+    (`nodes[node_name][entry_name] = defaults[entry_name]`)."""
+    return {**node, **defaults}
+
+
 def expanded(text: str, defines: Mapping[str, str]) -> str:
     """`text` (a bus description that read_network accepted) as cogen and the placeholder step make it."""
     data: Any = yaml.safe_load(text)
@@ -22,6 +28,6 @@ def expanded(text: str, defines: Mapping[str, str]) -> str:
         defaults = data.get("defaults") or {}
         result: dict[str, Any] = {"options": data.get("options") or {}, "master": data["master"]}
         for name, node in (data["nodes"] or {}).items():
-            result[name] = {**(node or {}), **defaults}
+            result[name] = with_defaults(node or {}, defaults)
         text = yaml.dump(result)
     return _PLACEHOLDER.sub(lambda match: defines.get(match.group(1), match.group(0)), text)

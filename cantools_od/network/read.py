@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from ..names import suggest
+from .cogen import with_defaults
 from .model import Mapped, Master, Network, Options, PdoConfig, SdoEntry, Slave
 from .yamltree import Located, NetworkError, read_yaml, substitute
 
@@ -247,10 +248,9 @@ def _with_defaults(reader: _Reader, name: str, defaults: Located, node: Located,
     """The node with ros2_canopen's `defaults`: copied over the node's own keys as its cogen does
     (`nodes[node_name][entry_name] = defaults[entry_name]`), a key so replaced a warning; without
     `cogen`, the node's own keys win."""
-    first, second = (node, defaults) if cogen else (defaults, node)
-    merged = Located({**first, **second})
+    merged = Located(with_defaults(node, defaults) if cogen else with_defaults(defaults, node))
     merged.line = node.line
-    merged.lines = {**first.lines, **second.lines}
+    merged.lines = with_defaults(node.lines, defaults.lines) if cogen else with_defaults(defaults.lines, node.lines)
     for key in node.keys() & defaults.keys() if cogen else ():
         if node[key] != defaults[key]:
             reader.warn(

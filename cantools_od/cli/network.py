@@ -30,20 +30,23 @@ def _defines(values: tuple[str, ...]) -> dict[str, str]:
 
 
 def load_network(
-    bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...], keep_going: bool = False
+    bus: str, defines: tuple[str, ...], dcf_dirs: tuple[str, ...], keep_going: bool = False, cogen: bool = True
 ) -> tuple[Network, dict[str, Device]]:
     """The network and each slave's device; any failure is one line and exit 2. Errors in reading a
-    node's file refuse the network, unless `keep_going` (then they are printed and the rest goes on)."""
+    node's file refuse the network, unless `keep_going` (then they are printed and the rest goes on).
+    The description's warnings (keys without effect where they stand) are printed."""
     from ..api import load
     from ..network.read import read_network
     from ..network.yamltree import NetworkError
     from ..sniff import NotADeviceDescription
 
     try:
-        network = read_network(bus, _defines(defines), [Path(d) for d in dcf_dirs])
+        network = read_network(bus, _defines(defines), [Path(d) for d in dcf_dirs], cogen)
     except NetworkError as error:
         click.echo(str(error), err=True)
         sys.exit(EXIT_USAGE)
+    for warning in network.warnings:
+        click.echo(warning, err=True)
     devices: dict[str, Device] = {}
     for slave in network.slaves:
         where = f"{bus}:{slave.line_of('dcf')}"
@@ -55,9 +58,10 @@ def load_network(
         except NotADeviceDescription as error:
             click.echo(f"{where}: error: {slave.name}: {slave.dcf_file}: {error}", err=True)
             sys.exit(EXIT_USAGE)
-        problem = errors_to_fix(device)
+        problem = errors_to_fix(device) or _repeated_section(device)
         if problem and keep_going:
-            report(device.diagnostics, minimum=Severity.ERROR)
+            if not report(device.diagnostics, minimum=Severity.ERROR):
+                click.echo(f"{where}: warning: {slave.name}: {slave.dcf_file}: {problem}", err=True)
         elif problem:
             click.echo(
                 f"{where}: error: {slave.name}: {slave.dcf_file}: {problem} (cantools-od lint; --keep-going)", err=True
@@ -65,6 +69,16 @@ def load_network(
             sys.exit(EXIT_USAGE)
         devices[slave.name] = device
     return network, devices
+
+
+def _repeated_section(device: Device) -> str | None:
+    """A section written twice (EDS002): the reader merges its keys, but which the device holds is not
+    known, so the network is refused, as dcfgen refuses such a file."""
+    for diagnostic in device.diagnostics:
+        if diagnostic.code == "EDS002" and diagnostic.message.startswith("section ["):
+            line = diagnostic.location.line
+            return f"line {line}: {diagnostic.message.split(';')[0]}: which one the device holds is unknown"
+    return None
 
 
 def make_plan(network: Network, devices: dict[str, Device], parameter_values: bool) -> NetworkPlan:
@@ -82,6 +96,17 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
     return plan
 
 
+def _remove(paths: list[Path]) -> None:
+    """The files an earlier run wrote that this one does not (a node left the bus); each removal is said."""
+    for path in paths:
+        try:
+            path.unlink()
+        except OSError as error:
+            click.echo(f"{path}: warning: not removed, though no longer written: {error.strerror}", err=True)
+        else:
+            click.echo(f"{path}: removed (written by an earlier run, no longer part of the network)", err=True)
+
+
 @click.command(name="network")
 @click.argument("bus", type=click.Path(dir_okay=False))
 @click.option(
@@ -96,6 +121,11 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
     multiple=True,
     type=click.Path(file_okay=False),
     help="Also look for nodes' `dcf` files here.",
+)
+@click.option(
+    "--no-cogen",
+    is_flag=True,
+    help="Read `defaults`/`nodes` as written (a node's key over `defaults`, file order), not as ros2_canopen's cogen.",
 )
 @click.option("--no-parameter-values", is_flag=True, help="Do not write the DCFs' ParameterValues at boot (as dcfgen).")
 @click.option("-r", "--remote-pdo", is_flag=True, help="Also write lely's remote PDO objects (dcfgen -r).")
@@ -115,6 +145,7 @@ def command(
     outdir: str | None,
     defines: tuple[str, ...],
     dcf_dirs: tuple[str, ...],
+    no_cogen: bool,
     no_parameter_values: bool,
     remote_pdo: bool,
     no_node_dcf: bool,
@@ -134,7 +165,7 @@ def command(
             "cantools-od network: error: nothing to do: give -o OUTDIR, --load or --dbc FILE (see --help)", err=True
         )
         sys.exit(EXIT_USAGE)
-    network, devices = load_network(bus, defines, dcf_dirs, keep_going)
+    network, devices = load_network(bus, defines, dcf_dirs, keep_going, cogen=not no_cogen)
     plan = make_plan(network, devices, not no_parameter_values)
     failed = False
     if check:
@@ -148,16 +179,21 @@ def command(
             click.echo(f"{bus}: error: the network has errors: nothing written (--no-check writes anyway)", err=True)
             sys.exit(EXIT_FINDINGS)
     files: dict[Path, bytes] = {}
+    removed: list[Path] = []
     if outdir is not None:
-        from ..network.outputs import outputs
+        from ..network.outputs import MANIFEST, manifest, outputs, stale
 
-        files.update(outputs(plan, Path(outdir), node_dcfs=not no_node_dcf, remote_pdo=remote_pdo))
+        generated = outputs(plan, Path(outdir), node_dcfs=not no_node_dcf, remote_pdo=remote_pdo)
+        removed = stale(Path(outdir), generated)
+        files.update(generated)
+        files[Path(outdir) / MANIFEST] = manifest(generated)
     if dbc is not None:
         from ..network.dbc import network_dbc
 
         files[Path(dbc)] = network_dbc(plan)
     if files:
         write_outputs(files)
+    _remove(removed)
     if show_load:
         from ..network.load import bus_load, format_load
 

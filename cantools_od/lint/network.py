@@ -269,16 +269,17 @@ class _Sender(NamedTuple):
 
 def lint_bus(plan: NetworkPlan) -> list[Finding]:
     """COB011 findings about a planned network (node-IDs, CAN-ID producers, PDO feeds and layouts,
-    heartbeats, SYNC), each at the line of the bus description that causes it."""
+    heartbeats, SYNC), each at the line of the bus description that causes it; shared node-IDs first."""
     file = plan.network.file
-    findings = [*_bus_node_ids(plan, file)]
-    findings.extend(_bus_finding(file, line, message) for slave in plan.slaves for line, message in slave.problems)
+    causes = sorted(_bus_node_ids(plan, file), key=lambda f: f.location.line)
+    findings = [_bus_finding(file, line, message) for slave in plan.slaves for line, message in slave.problems]
     senders = _bus_senders(plan)
     findings.extend(_bus_collisions(senders, file))
     findings.extend(_bus_consumers(plan, senders, file))
     findings.extend(_bus_heartbeats(plan, file))
     findings.extend(_bus_sync(plan, file))
-    return sorted(findings, key=lambda f: (f.location.line, f.message))
+    # a shared node-ID first: the CAN-ID clashes of its heartbeat, SDO and EMCY follow from it
+    return causes + sorted(findings, key=lambda f: (f.location.line, f.message))
 
 
 def _bus_finding(file: str, line: int, message: str, severity: Severity = Severity.ERROR) -> Finding:
@@ -318,7 +319,7 @@ def _bus_senders(plan: NetworkPlan) -> dict[int, list[_Sender]]:
             add(pdo.cob_id, _Sender("the master", f"its mirror of {name}'s {pdo.name}", pdo.line or line, pdo))
         add(HEARTBEAT_BASE + node, _Sender(name, "heartbeat", slave.slave.line_of("node_id")))
         add(SDO_TX_BASE + node, _Sender(name, "SDO response", slave.slave.line_of("node_id")))
-        emcy = slave.value(COB_ID_EMCY, 0) if slave.has(COB_ID_EMCY, 0) else EMCY_BASE + node
+        emcy = slave.cob_id(COB_ID_EMCY, 0) if slave.has(COB_ID_EMCY, 0) else EMCY_BASE + node
         if not emcy & VALID:
             add(emcy, _Sender(name, "EMCY", slave.slave.line_of("node_id")))
     return senders

@@ -11,6 +11,12 @@ per SYNC, 254/255 on events, as often as the inhibit time allows (else every eve
 with neither the rate is unknown and the PDO is listed as not counted), 252/253 only on request
 (not counted). SYNC is sent every `sync_period` µs, heartbeats every producer time.
 
+The worst SYNC period holds every frame that can fall into one period of T µs: SYNC and each
+synchronous PDO once (a PDO sent every n-th SYNC may fall into any one), and each frame sent at
+least Δ µs apart (an event-driven PDO's inhibit time, else its event timer; a heartbeat's producer
+time) ceil(T / Δ) times. Its load is Σ bits * count / (bit rate * T). EMCY, SDO and NMT frames
+have no bound and are not counted (the report says so).
+
 A PDO longer than 8 bytes can only travel in a CAN FD frame: its worst case follows ISO 11898-1:2015
 (arbitration and the frame's end at the nominal rate, control, data, stuff count and CRC at the data
 rate), counted in nominal bit times; the load at other bit rates keeps the ratio of the two rates.
@@ -67,8 +73,13 @@ class Frame:
     name: str
     bits: int
     per_second: float
-    per_sync: float  # frames in the worst SYNC period
     note: str = ""
+    spacing: int = 0
+    """The least time between two of these frames in µs; 0: sent once per SYNC at most."""
+
+    def in_period(self, period: int) -> int:
+        """How many of these frames can fall into `period` µs (one SYNC period): ceil(period / spacing)."""
+        return 1 if not self.spacing else -(-period // self.spacing)
 
 
 @dataclass
@@ -87,7 +98,7 @@ class Load:
         if not self.sync_period:
             return 0.0
         rate = (bit_rate or self.bit_rate) * 1000
-        busy = sum(frame.bits * frame.per_sync for frame in self.frames) / rate
+        busy = sum(frame.bits * frame.in_period(self.sync_period) for frame in self.frames) / rate
         return 100.0 * busy / (self.sync_period / 1e6)
 
     @property
@@ -116,15 +127,16 @@ def _pdo_frame(pdo: PlannedPdo, who: str, sync_hz: float, rates: tuple[int, int]
         if not sync_hz:
             return f"{name}: synchronous, but the master sends no SYNC"
         every = 1 if kind == ACYCLIC_SYNC else kind
-        return Frame(
-            name, bits, sync_hz / every, 1.0, "acyclic, at most every SYNC" if kind == 0 else f"every {every}. SYNC"
-        )
+        note = "acyclic, at most every SYNC" if kind == ACYCLIC_SYNC else f"every {every}. SYNC"
+        return Frame(name, bits, sync_hz / every, note)
     if kind in RTR_ONLY:
         return f"{name}: sent on request (RTR) only"
     if pdo.direction == TX and pdo.inhibit_time:
-        return Frame(name, bits, 10_000 / pdo.inhibit_time, 0.0, f"events, inhibit time {pdo.inhibit_time * 100} µs")
+        spacing = pdo.inhibit_time * 100
+        return Frame(name, bits, 1e6 / spacing, f"events, inhibit time {spacing} µs", spacing)
     if pdo.direction == TX and pdo.event_timer:
-        return Frame(name, bits, 1000 / pdo.event_timer, 0.0, f"event timer {pdo.event_timer} ms")
+        note = f"event timer {pdo.event_timer} ms (events in between: no inhibit time bounds them)"
+        return Frame(name, bits, 1000 / pdo.event_timer, note, pdo.event_timer * 1000)
     return f"{name}: event-driven without event timer or inhibit time: its rate is the application's"
 
 
@@ -137,11 +149,10 @@ def bus_load(plan: NetworkPlan, data_rate: int | None = None) -> Load:
     sync_hz = 1e6 / master.sync_period if master.sync_period else 0.0
     if sync_hz:
         load.frames.append(
-            Frame(f"master SYNC ({SYNC_ID:03X}h)", frame_bits(0), sync_hz, 1.0, f"every {master.sync_period} µs")
+            Frame(f"master SYNC ({SYNC_ID:03X}h)", frame_bits(0), sync_hz, f"every {master.sync_period} µs")
         )
     if master.heartbeat_producer:
-        beat = 1000 / master.heartbeat_producer
-        load.frames.append(Frame("master heartbeat", frame_bits(1), beat, 0.0, f"every {master.heartbeat_producer} ms"))
+        load.frames.append(_heartbeat("master heartbeat", master.heartbeat_producer))
     for slave in plan.slaves:
         name = slave.slave.name
         for direction, who in ((TX, name), (RX, f"master → {name}")):
@@ -152,10 +163,14 @@ def bus_load(plan: NetworkPlan, data_rate: int | None = None) -> Load:
                 else:
                     load.frames.append(result)
         if slave.heartbeat_producer:
-            beat = 1000 / slave.heartbeat_producer
             label = f"{name} heartbeat ({HEARTBEAT_BASE + slave.node_id:03X}h)"
-            load.frames.append(Frame(label, frame_bits(1), beat, 0.0, f"every {slave.heartbeat_producer} ms"))
+            load.frames.append(_heartbeat(label, slave.heartbeat_producer))
+    load.not_counted.append("EMCY, SDO and NMT frames: sent on errors and requests, without a bound")
     return load
+
+
+def _heartbeat(name: str, period_ms: int) -> Frame:
+    return Frame(name, frame_bits(1), 1000 / period_ms, f"every {period_ms} ms", period_ms * 1000)
 
 
 def format_load(load: Load, threshold: float) -> str:
@@ -163,7 +178,8 @@ def format_load(load: Load, threshold: float) -> str:
     width = max([len(frame.name) for frame in load.frames] + [5])
     lines.append(f"  {'frame':<{width}}  bits  frames/s  when")
     for frame in load.frames:
-        lines.append(f"  {frame.name:<{width}}  {frame.bits:>4}  {frame.per_second:>8.1f}  {frame.note}")
+        count = f" ({frame.in_period(load.sync_period)} in a SYNC period)" if load.sync_period else ""
+        lines.append(f"  {frame.name:<{width}}  {frame.bits:>4}  {frame.per_second:>8.1f}  {frame.note}{count}")
     for reason in load.not_counted:
         lines.append(f"  not counted: {reason}")
     per_second = load.percent_per_second()

@@ -123,3 +123,5 @@ class Network(BaseModel):
     options: Options = Field(default_factory=Options)
     master: Master
     slaves: list[Slave] = Field(default_factory=list)
+    warnings: list[str] = Field(default_factory=list)
+    """`file:line: warning: ...` lines of keys that have no effect where they stand, or are replaced."""

@@ -26,11 +26,35 @@ from ..model.cia301.objects import (
     RX,
     TX,
 )
+from ..model.cia301.pdo import dummy_type, is_dummy_index
 from ..model.cia301.slots import slot
 from ..model.datatypes import STANDARD_TYPES
 from .plan import NetworkPlan, PlannedPdo, SlavePlan, Write, device_type
 
 Section = tuple[str, list[tuple[str, object]]]
+
+
+MANIFEST = ".cantools-od-network"
+"""The list of files `network -o` wrote into a folder: on the next run, those it no longer writes
+(a node removed from the bus) are removed, and nothing else there is touched."""
+
+
+def manifest(files: dict[Path, bytes]) -> bytes:
+    names = sorted(path.name for path in files)
+    return (
+        "# written by cantools-od network; removed from here when no longer written\n" + "\n".join(names) + "\n"
+    ).encode()
+
+
+def stale(outdir: Path, files: dict[Path, bytes]) -> list[Path]:
+    """The files an earlier run wrote into `outdir` (its manifest) that this run does not write."""
+    try:
+        listed = (outdir / MANIFEST).read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return []
+    written = {path.name for path in files} | {MANIFEST}
+    names = [name for name in listed if name and not name.startswith("#") and name not in written]
+    return [outdir / name for name in names if Path(name).name == name and (outdir / name).is_file()]
 
 
 def concise(writes: list[Write]) -> bytes:
@@ -236,7 +260,7 @@ def _communication(plan: NetworkPlan) -> Iterator[Section]:
         yield f"1018sub{sub}", _var(title, U32, "ro", _hex(value))
     yield f"1018sub{IDENTITY_SERIAL}", _var("Serial number", U32, "ro")
     yield "1019", _var("Synchronous counter overflow value", U8, "rw", master.sync_overflow)
-    emcy = {s.node_id: s.value(COB_ID_EMCY, 0) for s in plan.slaves if s.has(COB_ID_EMCY, 0)}
+    emcy = {s.node_id: s.cob_id(COB_ID_EMCY, 0) for s in plan.slaves if s.has(COB_ID_EMCY, 0)}
     emcy = {node: cob for node, cob in emcy.items() if not cob & VALID}
     yield from _array("1028", U32, "rw", 127, emcy, title="Emergency consumer object", default="0x80000000")
     yield from _array("1029", U8, "rw", 254, dict(sorted(master.error_behavior.items())), title="Error behavior object")
@@ -324,9 +348,19 @@ def _mirror_sections(
         )
         yield f"{name}sub0", _var("Highest sub-index supported", U8, "const", len(entries))
         for sub, (slave, obj, obj_sub, dtype) in enumerate(entries, 1):
-            found = slot(slave.device, obj, obj_sub)
-            title = found.var.name if found is not None else f"{obj:04X}sub{obj_sub:X}"
-            yield f"{name}sub{sub:X}", _var(f"{slave.slave.name}: {title}", dtype, access, None, PDOMapping=1)
+            yield (
+                f"{name}sub{sub:X}",
+                _var(f"{slave.slave.name}: {_title(slave, obj, obj_sub)}", dtype, access, None, PDOMapping=1),
+            )
+
+
+def _title(slave: SlavePlan, index: int, sub: int) -> str:
+    """A mirrored object's name: its own, or its data type's for a dummy entry (as dcfgen names it)."""
+    found = slot(slave.device, index, sub)
+    if found is not None:
+        return found.var.name
+    dummy = dummy_type(slave.device, index) if is_dummy_index(index) else None
+    return dummy.name if dummy is not None else f"{index:04X}sub{sub:X}"
 
 
 def _manager(plan: NetworkPlan, configured: bool, software: bool) -> Iterator[Section]:

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 
 from ..model import Device, NodeIdExpr, ValueKind, Variable
 from ..model.cia301.cobid import PREDEFINED, VALID
+from ..model.cia301.connections import predefined_cob_base
 from ..model.cia301.master import EXPECTED_SOFTWARE, REVISION_NUMBER, SERIAL_NUMBER
 from ..model.cia301.objects import (
     COB_ID_TIME,
@@ -135,6 +136,14 @@ class SlavePlan:
     def value(self, index: int, sub: int) -> int:
         found = slot(self.device, index, sub)
         return (as_int(found.var.value(self.node_id)) or 0) if found is not None else 0
+
+    def cob_id(self, index: int, sub: int) -> int:
+        """A COB-ID entry as the slave holds it; one the file gives no value takes its pre-defined
+        connection set value (CiA 301: EMCY 80h + node-ID), not 000h, which is NMT's."""
+        found = slot(self.device, index, sub)
+        held = as_int(found.var.value(self.node_id)) if found is not None else None
+        base = predefined_cob_base(index, sub)
+        return base + self.node_id if held is None and base is not None else held or 0
 
 
 @dataclass
@@ -261,11 +270,7 @@ def _plan_slave(
             plan.writes.extend(_pdo(state, direction, merged, next_cob))
     for (direction, _), config in sorted(configured.items()):
         plan.writes.extend(_pdo(state, direction, config, next_cob))
-    for entry in slave.sdo:
-        try:
-            plan.writes.append(state.write(entry.index, entry.sub_index, entry.value, entry.line))
-        except NetworkError as error:
-            plan.problems.append((entry.line, error.reason))
+    _sdo_list(state, network.file)
     plan.pdos = _final_pdos(state)
     plan.heartbeat_producer = state.holds(PRODUCER_HEARTBEAT, 0) if plan.has(PRODUCER_HEARTBEAT, 0) else 0
     if slave.heartbeat_producer is not None:
@@ -276,6 +281,25 @@ def _plan_slave(
     elif plan.writes:
         plan.configuration_file = os.path.join(dcf_path, slave.name + ".bin")
     return plan
+
+
+def _sdo_list(state: _Slave, file: str) -> None:
+    """The YAML's `sdo` writes; one the master cannot make is a problem, the same object written twice
+    a warning (the later value stays: often another object was meant, 6083h twice for 6083h and 6084h)."""
+    plan = state.plan
+    first: dict[tuple[int, int], int] = {}
+    for entry in plan.slave.sdo:
+        key = (entry.index, entry.sub_index)
+        if key in first:
+            plan.warnings.append(
+                f"{file}:{entry.line}: warning: {plan.slave.name}: {entry.index:04X}sub{entry.sub_index:X} is written "
+                f"again (first on line {first[key]}): the later value stays; another object meant?"
+            )
+        first.setdefault(key, entry.line)
+        try:
+            plan.writes.append(state.write(entry.index, entry.sub_index, entry.value, entry.line))
+        except NetworkError as error:
+            plan.problems.append((entry.line, error.reason))
 
 
 def device_pdos(device: Device, node_id: int, name: str = "device") -> list[PlannedPdo]:

@@ -109,6 +109,14 @@ ROS2_SLAVE_KEYS = frozenset(
 )
 """Keys ros2_canopen's drivers read from a node's section (its documentation and sources)."""
 SECTIONS = ("options", "master", "defaults", "nodes")
+NODE_KEYS = frozenset(SLAVE_KEYS) | {"rpdo", "tpdo", "sdo"} | ROS2_SLAVE_KEYS
+BELONGS = {
+    "options": ("in `options`", frozenset(OPTION_KEYS)),
+    "master": ("in `master`", frozenset(MASTER_KEYS) | ROS2_MASTER_KEYS),
+    "node": ("in a node's section (or `defaults`)", NODE_KEYS),
+}
+"""Where each key of a bus description takes effect: one written elsewhere is ignored by dcfgen (and
+ros2_canopen), so it is a warning naming where it belongs, not an error."""
 
 
 class _Reader:
@@ -116,6 +124,10 @@ class _Reader:
         self.file = file
         self.defines = defines
         self.search = search
+        self.warnings: list[str] = []
+
+    def warn(self, line: int, message: str) -> None:
+        self.warnings.append(f"{self.file}:{line}: warning: {message}")
 
     def fail(self, line: int, message: str) -> NetworkError:
         return NetworkError(self.file, line, message)
@@ -130,9 +142,15 @@ class _Reader:
         return data
 
     def fields(
-        self, data: Located, keys: Mapping[str, Convert], what: str, passed: frozenset[str] = frozenset()
+        self,
+        data: Located,
+        keys: Mapping[str, Convert],
+        what: str,
+        passed: frozenset[str] = frozenset(),
+        kind: str = "",
     ) -> tuple[dict[str, Any], dict[str, Any]]:
-        """The known keys converted, and the `passed` ones as written; an unknown key is refused."""
+        """The known keys converted, and the `passed` ones as written; a key of another `kind` of
+        section (BELONGS) is a warning and left out, any other unknown key is refused."""
         known: dict[str, Any] = {}
         kept: dict[str, Any] = {}
         for key, raw in data.items():
@@ -143,6 +161,10 @@ class _Reader:
                 kept[name] = value
                 continue
             convert = keys.get(name)
+            elsewhere = [where for other, (where, valid) in BELONGS.items() if other != kind and name in valid]
+            if convert is None and kind and elsewhere:
+                self.warn(line, f"{what}: {name} has no effect here (dcfgen ignores it); it belongs {elsewhere[0]}")
+                continue
             if convert is None:
                 valid = set(keys) | passed
                 raise self.fail(line, f"unknown key {name!r} in {what}; {suggest(name, valid)}")
@@ -156,11 +178,14 @@ class _Reader:
         return {"line": data.line, "lines": {str(key): line for key, line in data.lines.items()}}
 
 
-def read_network(path: str, defines: Mapping[str, str] | None = None, search: Sequence[Path] = ()) -> Network:
+def read_network(
+    path: str, defines: Mapping[str, str] | None = None, search: Sequence[Path] = (), cogen: bool = True
+) -> Network:
     """The network `path` describes; NetworkError (one line) when it cannot be read or is not one.
 
     `defines` give the `@NAME@` placeholders' values; a node's `dcf` is looked for beside the
-    description, then in the `search` folders."""
+    description, then in the `search` folders. With `cogen` (ros2_canopen's build), a file with
+    `nodes` is read as ros2_canopen's `cogen` rewrites it for dcfgen; without, as written."""
     try:
         text = Path(path).read_text(encoding="utf-8")
     except OSError as error:
@@ -169,27 +194,18 @@ def read_network(path: str, defines: Mapping[str, str] | None = None, search: Se
         raise NetworkError(path, 0, "not YAML: not UTF-8 text") from None
     data = read_yaml(text, path)
     reader = _Reader(path, defines or {}, [Path(path).parent, *search])
-    return _network(reader, data)
+    return _network(reader, data, cogen)
 
 
-def _network(reader: _Reader, data: Located) -> Network:
+def _network(reader: _Reader, data: Located, cogen: bool) -> Network:
     options_data = reader.section(data.get("options"), data.line_of("options"), "options")
-    known, _ = reader.fields(options_data, OPTION_KEYS, "options")
+    known, _ = reader.fields(options_data, OPTION_KEYS, "options", kind="options")
     options = Options(**known, **reader.lines(options_data))
     master = _master(reader, reader.section(data.get("master"), data.line_of("master"), "master"))
     defaults = reader.section(data.get("defaults"), data.line_of("defaults"), "defaults")
-    nodes: list[tuple[str, Located]] = []
-    for key, value in data.items():
-        name = str(key)
-        if name in ("options", "master", "defaults") or name.startswith("."):
-            continue
-        if name == "nodes":
-            group = reader.section(value, data.line_of(key), "nodes")
-            nodes.extend((str(n), reader.section(v, group.line_of(n), str(n))) for n, v in group.items())
-        else:
-            nodes.append((name, reader.section(value, data.line_of(key), name)))
-    slaves = [_slave(reader, name, _with_defaults(defaults, node)) for name, node in nodes]
-    network = Network(file=reader.file, options=options, master=master, slaves=slaves)
+    nodes, cogen = _nodes(reader, data, cogen)
+    slaves = [_slave(reader, name, _with_defaults(reader, name, defaults, node, cogen), cogen) for name, node in nodes]
+    network = Network(file=reader.file, options=options, master=master, slaves=slaves, warnings=reader.warnings)
     _ros2_rules(reader, network, "master" in data)
     if "master" not in data:
         raise reader.fail(data.line, "no `master` section: a network needs its master (node_id, ...)")
@@ -198,25 +214,61 @@ def _network(reader: _Reader, data: Located) -> Network:
     return network
 
 
-def _with_defaults(defaults: Located, node: Located) -> Located:
-    """The node's keys over the `defaults` section's (ros2_canopen's `defaults`)."""
-    merged = Located({**defaults, **node})
+def _nodes(reader: _Reader, data: Located, cogen: bool) -> tuple[list[tuple[str, Located]], bool]:
+    """The slaves' sections: by name at the top level (dcfgen's layout) and in `nodes` (ros2_canopen's).
+
+    ros2_canopen's cogen writes `nodes` out with `yaml.dump`, which sorts the keys: dcfgen then
+    meets the nodes by name, and each PDO table by number; it keeps only `options`, `master` and
+    `nodes`, so a node at the top level beside `nodes` is not built (a warning). A file without
+    `nodes` is dcfgen's own layout, which cogen does not take: it is read as written (False)."""
+    top: list[tuple[str, Located]] = []
+    grouped: list[tuple[str, Located]] = []
+    for key, value in data.items():
+        name = str(key)
+        if name in ("options", "master", "defaults") or name.startswith("."):
+            continue
+        if name == "nodes":
+            group = reader.section(value, data.line_of(key), "nodes")
+            grouped.extend((str(n), reader.section(v, group.line_of(n), str(n))) for n, v in group.items())
+        else:
+            top.append((name, reader.section(value, data.line_of(key), name)))
+    if not cogen or "nodes" not in data:
+        return top + grouped, False
+    for name, node in top:
+        reader.warn(node.line, f"{name}: ros2_canopen's cogen keeps only `nodes`: this node is not built")
+    return sorted(grouped, key=lambda item: item[0]), True
+
+
+def _with_defaults(reader: _Reader, name: str, defaults: Located, node: Located, cogen: bool) -> Located:
+    """The node with ros2_canopen's `defaults`: copied over the node's own keys as its cogen does
+    (`nodes[node_name][entry_name] = defaults[entry_name]`), a key so replaced a warning; without
+    `cogen`, the node's own keys win."""
+    first, second = (node, defaults) if cogen else (defaults, node)
+    merged = Located({**first, **second})
     merged.line = node.line
-    merged.lines = {**defaults.lines, **node.lines}
+    merged.lines = {**first.lines, **second.lines}
+    for key in node.keys() & defaults.keys() if cogen else ():
+        if node[key] != defaults[key]:
+            reader.warn(
+                node.line_of(key),
+                f"{name}: {key} is replaced by `defaults` (line {defaults.line_of(key)}), as ros2_canopen's "
+                "cogen copies defaults over each node (--no-cogen: the node's own value)",
+            )
     return merged
 
 
 def _master(reader: _Reader, data: Located) -> Master:
-    known, kept = reader.fields(data, MASTER_KEYS, "master", ROS2_MASTER_KEYS)
+    known, kept = reader.fields(data, MASTER_KEYS, "master", ROS2_MASTER_KEYS, "master")
     node_id = known.get("node_id", 255)
     if not (1 <= node_id <= 127 or node_id == 255):
         raise reader.fail(data.line_of("node_id"), f"master: node_id {node_id} is not 1-127 (or 255: unconfigured)")
     return Master(**known, extra=kept, **reader.lines(data))
 
 
-def _slave(reader: _Reader, name: str, data: Located) -> Slave:
+def _slave(reader: _Reader, name: str, data: Located, by_number: bool) -> Slave:
+    """One slave; `by_number`: its PDO tables in number order (as cogen's `yaml.dump` sorts them)."""
     keys = {**SLAVE_KEYS, "rpdo": _anything, "tpdo": _anything, "sdo": _anything}
-    known, kept = reader.fields(data, keys, name, ROS2_SLAVE_KEYS)
+    known, kept = reader.fields(data, keys, name, ROS2_SLAVE_KEYS, "node")
     if "dcf" not in known:
         raise reader.fail(data.line, f"{name}: no `dcf` (the EDS/DCF that describes the node)")
     node_id = known.get("node_id")
@@ -224,7 +276,8 @@ def _slave(reader: _Reader, name: str, data: Located) -> Slave:
         raise reader.fail(data.line_of("node_id"), f"{name}: node_id {node_id} is not 1-127")
     for direction in ("rpdo", "tpdo"):
         if direction in known:
-            known[direction] = _pdos(reader, name, direction, known[direction], data.line_of(direction))
+            pdos = _pdos(reader, name, direction, known[direction], data.line_of(direction))
+            known[direction] = sorted(pdos, key=lambda pdo: pdo.number) if by_number else pdos
     if "sdo" in known:
         known["sdo"] = _sdos(reader, name, known["sdo"], data.line_of("sdo"))
     return Slave(name=name, **known, extra=kept, **reader.lines(data))

@@ -214,11 +214,30 @@ def test_load_report(folder: Path) -> None:
     # per second: SYNC 55*100, drive TPDO1 115*100, TPDO2 135*100, master's RPDO2 115*100, heartbeats 65*2 + 65*1,
     # io TPDO1 105*100 (inhibit 10 ms), TPDO2 135*200 (inhibit 5 ms): 79695 bits of 1000000
     assert "load per second: 8.0 %" in result.stdout
-    # one SYNC period of 10 ms: SYNC 55 + 115 + 135 + 115 bits = 420 µs
-    assert "load in the worst SYNC period (10000 µs): 4.2 %" in result.stdout
+    # the worst SYNC period of 10 ms holds SYNC 55 and the synchronous PDOs 115 + 135 + 115 once, each
+    # heartbeat once (500 and 1000 ms apart: 65 + 65), io TPDO1 once (inhibit time 10 ms: 105) and io TPDO2
+    # twice (5 ms: 2 x 135): 925 bits, 925 µs of 10000 at 1000 kbit/s
+    assert f"load in the worst SYNC period (10000 µs): {925 / 10000 * 100:.1f} %" in result.stdout
+    assert "io TPDO2 (283h)               135     200.0  events, inhibit time 5000 µs (2 in a SYNC period)" in (
+        result.stdout
+    )
+    assert "not counted: EMCY, SDO and NMT frames" in result.stdout
     assert "not counted: master → io RPDO1 (203h): event-driven" in result.stdout
     high = run(folder / "bus.yml", "--load", "--define", "INSTALL=/x", "--threshold", "5")
-    assert high.returncode == 1 and "warning: bus load 8.0 % is above 5 %" in high.stdout
+    assert high.returncode == 1 and "warning: bus load 9.2 % is above 5 %" in high.stdout
+
+
+def test_worst_sync_period_is_never_below_the_average(folder: Path) -> None:
+    """Heartbeats and event-driven PDOs count in the worst SYNC period (they counted 0, issue 43)."""
+    slow = BUS.replace("sync_period: 10000", "sync_period: 100000").replace("transmission: 1", "transmission: 10")
+    (folder / "bus.yml").write_text(slow)
+    result = run(folder / "bus.yml", "--load", "--define", "INSTALL=/x")
+    lines = {line.split(":")[0].strip(): line for line in result.stdout.splitlines()}
+    per_second = float(lines["load per second"].split()[-2])
+    worst = float(lines["load in the worst SYNC period (100000 µs)"].split()[-2])
+    # 100 ms: SYNC 55, TPDO1 115 (every 10th SYNC, once), TPDO2 135 and the master's RPDO2 115 (every SYNC),
+    # heartbeats 65 + 65, io TPDO1 10 x 105, io TPDO2 20 x 135: 4300 bits of 100000
+    assert worst == round(4300 / 100000 * 100, 1) and worst >= per_second
 
 
 def as_dcf(eds: str, node_id: int, values: dict[str, str]) -> str:

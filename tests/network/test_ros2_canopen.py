@@ -5,9 +5,9 @@ with the EDS files beside them, from this machine's snapshot (tests/mirrors.py; 
 ros2_canopen is licensed under the Apache License 2.0 (Copyright ROS-Industrial and its contributors); its files
 are read in place and never copied into this project.
 
-ros2_canopen builds a configuration by expanding `defaults` into each of `nodes` (its `cogen`), replacing
-`@BUS_CONFIG_PATH@` and running `dcfgen -rS` in the configuration's folder; the test does the same for dcfgen
-and runs `cantools-od network -r --define BUS_CONFIG_PATH=...` on the file as written.
+ros2_canopen builds a configuration by copying `defaults` over each of `nodes` (its `cogen`, run here from the
+snapshot), replacing `@BUS_CONFIG_PATH@` and running `dcfgen -rS` in the configuration's folder (ros2build.py);
+the test runs `cantools-od network -r --define BUS_CONFIG_PATH=...` on the file as written.
 """
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ from pathlib import Path
 
 import mirrors
 import pytest
+import ros2build
 import yaml
 
 from cantools_od.model.cia301.master import read_concise_dcf
@@ -59,18 +60,8 @@ def ours(bus: Path, out: Path, *extra: str) -> subprocess.CompletedProcess[str]:
 
 
 def dcfgen(bus: Path, out: Path) -> subprocess.CompletedProcess[str]:
-    """dcfgen as ros2_canopen's cogen_dcf runs it: defaults expanded into the nodes, the path replaced."""
-    data = yaml.safe_load(bus.read_text())
-    nodes, defaults = data.pop("nodes", {}), data.pop("defaults", {})
-    for name, node in nodes.items():
-        data[name] = {**defaults, **node}
-    out.mkdir(parents=True)
-    flat = out / "bus.yml"
-    flat.write_text(yaml.safe_dump(data).replace("@BUS_CONFIG_PATH@", INSTALLED))
-    tool = Path(sys.executable).parent / "dcfgen"
-    if not tool.exists():
-        pytest.skip("dcfgen (dcf-tools) is not installed")
-    return subprocess.run([str(tool), "-d", str(out), "-rS", str(flat)], capture_output=True, text=True, cwd=bus.parent)
+    """dcfgen as ros2_canopen's cogen_dcf runs it: its cogen, the path replaced, `dcfgen -rS`."""
+    return ros2build.ros2_build(bus, out, INSTALLED, out.parent.parent)
 
 
 def mirrored_cobs(master_dcf: str) -> set[int]:

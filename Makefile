@@ -18,6 +18,7 @@ demo: $(STAMP)
 	$(BIN)/cantools-od pdo eds/cia402_drive.eds --node-id 5
 	$(BIN)/cantools-od gen eds/cia402_drive.eds -t c -t rust -t python -t markdown -t html -o build/demo --name drive
 	$(BIN)/cantools-od pdo eds/cia402_drive.eds --format svg -o build/demo/pdo
+	$(BIN)/cantools-od network examples/network/bus.yml --load --svg build/demo/bus.svg
 	@echo "generated:" && ls build/demo
 
 # One worker per core (pytest-xdist); a module whose tests share one expensive fixture (a built crate,

@@ -170,6 +170,7 @@ def test_html_page_in_a_browser(tmp_path: Path) -> None:
 SHOTS = {
     "pdo_sheet": ("pdo", ["--format", "svg", "--node-id", "5"], 1200, 760),
     "html_page": ("gen", ["-t", "html", "-o", "out", "--node-id", "5"], 1000, 700),
+    "bus": ("network", ["--svg", "bus.svg"], 1000, 400),
 }
 
 
@@ -177,11 +178,13 @@ SHOTS = {
 def test_screenshot_matches_the_committed_image(kind: str, tmp_path: Path) -> None:
     """What a person sees, within a tolerance for font rendering: UPDATE_GOLDEN=1 rewrites the image."""
     command, options, width, height = SHOTS[kind]
-    example = EXAMPLES / "cia402_drive.eds"
+    example = ROOT / "examples" / "network" / "bus.yml" if command == "network" else EXAMPLES / "cia402_drive.eds"
     run = subprocess.run([*cli_command(), command, str(example), *options],
                          capture_output=True, cwd=tmp_path, check=False)  # fmt: skip
     assert run.returncode == 0, run.stderr
-    shown = tmp_path / "out" / "cia402_drive.html" if command == "gen" else tmp_path / "sheet.svg"
+    shown = {"gen": tmp_path / "out" / "cia402_drive.html", "pdo": tmp_path / "sheet.svg"}.get(
+        command, tmp_path / "bus.svg"
+    )
     if command == "pdo":
         shown.write_bytes(run.stdout)
     with browser() as chrome:

@@ -16,7 +16,9 @@ $(STAMP): pyproject.toml hatch_build.py $(shell find cantools_od templates schem
 demo: $(STAMP)
 	$(BIN)/cantools-od lint eds/cia402_drive.eds
 	$(BIN)/cantools-od pdo eds/cia402_drive.eds --node-id 5
-	$(BIN)/cantools-od gen eds/cia402_drive.eds -t c -t rust -t python -t markdown -o build/demo --name drive
+	$(BIN)/cantools-od gen eds/cia402_drive.eds -t c -t rust -t python -t markdown -t html -o build/demo --name drive
+	$(BIN)/cantools-od pdo eds/cia402_drive.eds --format svg -o build/demo/pdo
+	$(BIN)/cantools-od network examples/network/bus.yml --load --svg build/demo/bus.svg
 	@echo "generated:" && ls build/demo
 
 # One worker per core (pytest-xdist); a module whose tests share one expensive fixture (a built crate,

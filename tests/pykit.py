@@ -37,8 +37,11 @@ def view_of(path: Path, name: str, node_id: int | None = None) -> DeviceView:
 
 
 def generate(path: Path, target: str, name: str, node_id: int | None = None) -> str:
-    """The one file `target` makes for `path`, rendered in-process."""
+    """The one file `target` makes for `path` (the page, for Markdown: its PDO pictures beside it are SVG files),
+    rendered in-process."""
     files = renderer(target)(view_of(path, name, node_id))
+    if target == "markdown":
+        files = {file: text for file, text in files.items() if not file.endswith(".svg")}
     assert len(files) == 1, files
     return next(iter(files.values()))
 
@@ -258,6 +261,7 @@ def headings(tokens: list[Any]) -> list[str]:
 
 
 LINK = re.compile(r"\]\(#([^)]*)\)")
+PICTURE = re.compile(r"[a-z0-9_]+\.[rt]pdo[0-9]+\.svg")
 CELL = re.compile(r"(?<!\\)\|")  # a pipe that splits a GFM table row (one not escaped)
 
 
@@ -267,7 +271,10 @@ def check_markdown(text: str) -> list[Any]:
     tokens = markdown_tokens(text)
     kinds = {t.type for t in walk(tokens)}
     assert not kinds & {"html_inline", "html_block"}, "raw HTML"
-    assert not kinds & {"em_open", "strong_open", "s_open", "image"}, kinds
+    assert not kinds & {"em_open", "strong_open", "s_open"}, kinds
+    for token in walk(tokens):  # the only images are the PDO pictures gen writes beside the page
+        if token.type == "image":
+            assert PICTURE.fullmatch(str(token.attrGet("src"))), token.attrGet("src")
     anchors: dict[str, int] = {}
     for heading in headings(tokens):
         slug = github_slug(heading)

@@ -23,7 +23,7 @@ COMMANDS = {
     "fmt": ("fmt", "Rewrite files in canonical form."),
     "convert": ("convert", "Convert between EDS, DCF, XDD, XDC and JSON."),
     "pdo": ("pdo", "Show the PDO map with bit layouts."),
-    "gen": ("gen", "Generate C, Rust, Python, Markdown, CANopenNode OD.h/OD.c and a DBC from an object dictionary."),
+    "gen": ("gen", "Generate C, Rust, Python, Markdown, HTML, CANopenNode OD.h/OD.c and a DBC from an OD."),
     "ids": ("ids", "Print the identifiers generated code uses, as a pin file."),
     "lint": ("lint", "Check EDS/DCF/XDD/XDC files against CiA 306/311/301 and PDO rules."),
     "lsp": ("lsp", "Language server for editors: lint, hover, definitions, fixes, formatting."),

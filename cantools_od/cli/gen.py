@@ -50,7 +50,7 @@ def default_name(file: str) -> str:
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option(
     "-t", "--target", "targets", multiple=True, required=True,
-    type=click.Choice(["c", "rust", "python", "markdown", "canopennode", "dbc"]),
+    type=click.Choice(["c", "rust", "python", "markdown", "html", "canopennode", "dbc"]),
     help="What to generate; repeat for several (dbc: the PDOs at the node-ID, for trace tools).",
 )  # fmt: skip
 @click.option("-o", "--output", "outdir", required=True, type=click.Path(file_okay=False), help="Output folder.")

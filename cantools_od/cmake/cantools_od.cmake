@@ -1,7 +1,7 @@
 # CMake integration of cantools-od: generate code from a CANopen EDS/DCF or XDD/XDC at build time.
 #
 #   cantools_od_generate(<target> EDS <file> | XDD <file>
-#                        [NAME <name>] [TARGETS c|rust|python|markdown|canopennode ...]
+#                        [NAME <name>] [TARGETS c|rust|python|markdown|html|canopennode ...]
 #                        [NODE_ID <n>] [OUTPUT_DIR <dir>] [PINS <file>] [CAN_FD] [KEEP_GOING] [OD_NAME <name>])
 #
 # Adds a custom command that runs `cantools-od gen` whenever the EDS (or the pin file, or the
@@ -116,9 +116,9 @@ function(cantools_od_generate target)
     set(arg_TARGETS c)
   endif()
   foreach(_kind IN LISTS arg_TARGETS)
-    if(NOT _kind MATCHES "^(c|rust|python|markdown|canopennode)$")
+    if(NOT _kind MATCHES "^(c|rust|python|markdown|html|canopennode)$")
       message(FATAL_ERROR
-              "cantools_od_generate(${target}): unknown target '${_kind}' (c, rust, python, markdown, canopennode)")
+              "cantools_od_generate(${target}): unknown target '${_kind}' (c, rust, python, markdown, html, canopennode)")
     endif()
   endforeach()
   if(arg_OUTPUT_DIR)

@@ -25,7 +25,7 @@ rate), counted in nominal bit times; the load at other bit rates keeps the ratio
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ..model.cia301.cobid import BASE_29BIT, EXTENDED, HEARTBEAT_BASE, SYNC_ID
 from ..model.cia301.objects import RX, TX
@@ -76,6 +76,8 @@ class Frame:
     note: str = ""
     spacing: int = 0
     """The least time between two of these frames in µs; 0: sent once per SYNC at most."""
+    sender: str = ""  # the node that sends it: "master" or a slave's name
+    can_id: int = 0
 
     def in_period(self, period: int) -> int:
         """How many of these frames can fall into `period` µs (one SYNC period): ceil(period / spacing)."""
@@ -158,11 +160,11 @@ def bus_load(plan: NetworkPlan, data_rate: int | None = None) -> Load:
     load = Load(plan.network.file, master.baudrate, master.sync_period)
     sync_hz = 1e6 / master.sync_period if master.sync_period else 0.0
     if sync_hz:
-        load.frames.append(
-            Frame(f"master SYNC ({SYNC_ID:03X}h)", frame_bits(0), sync_hz, f"every {master.sync_period} µs")
-        )
+        note = f"every {master.sync_period} µs"
+        load.frames.append(Frame(f"master SYNC ({SYNC_ID:03X}h)", frame_bits(0), sync_hz, note, 0, "master", SYNC_ID))
     if master.heartbeat_producer:
-        load.frames.append(_heartbeat("master heartbeat", master.heartbeat_producer))
+        beat = HEARTBEAT_BASE + master.node_id
+        load.frames.append(_heartbeat("master heartbeat", master.heartbeat_producer, "master", beat))
     for slave in plan.slaves:
         name = slave.slave.name
         for direction, who in ((TX, name), (RX, f"master → {name}")):
@@ -171,16 +173,17 @@ def bus_load(plan: NetworkPlan, data_rate: int | None = None) -> Load:
                 if isinstance(result, str):
                     load.not_counted.append(result)
                 else:
-                    load.frames.append(result)
+                    sender = name if direction == TX else "master"
+                    load.frames.append(replace(result, sender=sender, can_id=pdo.cob_id & BASE_29BIT))
         if slave.heartbeat_producer:
-            label = f"{name} heartbeat ({HEARTBEAT_BASE + slave.node_id:03X}h)"
-            load.frames.append(_heartbeat(label, slave.heartbeat_producer))
+            beat = HEARTBEAT_BASE + slave.node_id
+            load.frames.append(_heartbeat(f"{name} heartbeat ({beat:03X}h)", slave.heartbeat_producer, name, beat))
     load.not_counted.append("EMCY, SDO and NMT frames: sent on errors and requests, without a bound")
     return load
 
 
-def _heartbeat(name: str, period_ms: int) -> Frame:
-    return Frame(name, frame_bits(1), 1000 / period_ms, f"every {period_ms} ms", period_ms * 1000)
+def _heartbeat(name: str, period_ms: int, sender: str, can_id: int) -> Frame:
+    return Frame(name, frame_bits(1), 1000 / period_ms, f"every {period_ms} ms", period_ms * 1000, sender, can_id)
 
 
 def format_load(load: Load, threshold: float) -> str:

@@ -14,7 +14,14 @@ from . import escape, prose
 
 # target name → module in this package with `stream(view) -> dict[str, Iterable[str]]` (file name → its text
 # in pieces, produced as they are read) and `render(view) -> dict[str, str]` (the same, whole)
-TARGETS = {"c": "c", "rust": "rust", "python": "python", "markdown": "markdown", "canopennode": "canopennode"}
+TARGETS = {
+    "c": "c",
+    "rust": "rust",
+    "python": "python",
+    "markdown": "markdown",
+    "canopennode": "canopennode",
+    "html": "html",
+}
 
 Renderer = Callable[..., dict[str, str]]
 Streamer = Callable[..., dict[str, Iterable[str]]]
@@ -73,6 +80,8 @@ def environment() -> jinja2.Environment:
         python_string=escape.python_string,
         md=escape.markdown_text,
         md_cell=escape.markdown_cell,
+        xml=escape.xml_text,
+        xml_comment=escape.xml_comment,
         hex4=lambda n: f"{n:04X}",
         count=prose.count,
     )

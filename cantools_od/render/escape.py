@@ -103,3 +103,18 @@ def markdown_plain(text: str) -> str:
 def markdown_cell(text: str) -> str:
     """A GFM table cell: like markdown_text, and never empty-looking (an em dash stands for no text)."""
     return markdown_text(text) or "\u2014"
+
+
+_NOT_XML = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
+
+
+def xml_text(text: str) -> str:
+    """For SVG or HTML text and attribute values: markup characters as entities, and the control characters
+    XML cannot hold spelled as `\\xNN`, so that the document always parses and shows what the file says."""
+    escaped = text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")
+    return _NOT_XML.sub(lambda m: f"\\x{ord(m.group()):02x}", escaped)
+
+
+def xml_comment(text: str) -> str:
+    """For inside <!-- ... -->: one line that cannot end the comment."""
+    return xml_text(_one_line(text)).replace("--", "- -")

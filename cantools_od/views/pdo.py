@@ -7,7 +7,16 @@ from dataclasses import dataclass
 from ..identifiers import Identifiers, assign
 from ..model import DataType, Device, NodeIdExpr
 from ..model.cia301.modules import ModuleObject, module_objects
-from ..model.cia301.pdo import MapEntry, count_invalid, dummy_type, is_dummy_index, pdos
+from ..model.cia301.pdo import (
+    EVENT_TIMER_SUB,
+    INHIBIT_SUB,
+    SYNC_START_SUB,
+    MapEntry,
+    count_invalid,
+    dummy_type,
+    is_dummy_index,
+    pdos,
+)
 
 
 @dataclass(frozen=True)
@@ -52,6 +61,9 @@ class Pdo:
     transmission_type: int | None
     entries: tuple[PdoEntry, ...]
     count: int | None = None  # sub0 of the mapping record as configured
+    inhibit_time: int | None = None  # sub 3, in 100 µs
+    event_timer: int | None = None  # sub 5, in ms
+    sync_start: int | None = None  # sub 6, a count of SYNC messages
 
     @property
     def count_invalid(self) -> bool:
@@ -86,6 +98,9 @@ def pdo_map(device: Device, node_id: int | None = None, identifiers: Identifiers
                 transmission_type=transmission_type if isinstance(transmission_type, int) else None,
                 entries=tuple(_entry(device, entry, ids, made) for entry in pdo.mapped()),
                 count=pdo.count,
+                inhibit_time=pdo.comm_int(INHIBIT_SUB),
+                event_timer=pdo.comm_int(EVENT_TIMER_SUB),
+                sync_start=pdo.comm_int(SYNC_START_SUB),
             )
         )
     return found

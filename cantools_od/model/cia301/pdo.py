@@ -41,6 +41,27 @@ MAPPING_ENTRY_TYPE = UNSIGNED32.index
 DUMMY_TYPES = range(BOOLEAN.index, UNSIGNED32.index + 1)
 
 
+# Sub-indices of the communication record that time a PDO (CiA 301 §7.5.2.35): the inhibit time counts
+# 100 µs, the event timer 1 ms; the SYNC start value is a count of SYNC messages.
+TRANSMISSION_SUB, INHIBIT_SUB, EVENT_TIMER_SUB, SYNC_START_SUB = 2, 3, 5, 6
+INHIBIT_UNIT_US = 100
+
+
+def transmission_meaning(value: int) -> str:
+    """What a transmission type (communication sub-index 2) makes the PDO do, CiA 301 §7.5.2.35."""
+    if value == 0:
+        return "synchronous, acyclic"
+    if value == 1:
+        return "synchronous, every SYNC"
+    if value <= 240:
+        return f"synchronous, every {value}th SYNC"
+    if value in (252, 253):
+        return "RTR only"
+    if value >= 254:
+        return "event-driven"
+    return "reserved"
+
+
 def frame_bits(can_fd: bool) -> int:
     """The bits one PDO may carry: a classic CAN frame's 8 bytes, or CAN FD's 64."""
     return CAN_FD_BITS if can_fd else CLASSIC_CAN_BITS

@@ -4,6 +4,7 @@ names every file format and target its row names. A help text or a row that drif
 
 from __future__ import annotations
 
+import os
 import re
 import shlex
 import subprocess
@@ -106,6 +107,7 @@ PLACEHOLDERS = {
     "OUT.eds": "imported.eds",
 }
 BUS = 'master:\n  node_id: 1\ndevice:\n  node_id: 5\n  dcf: "device.eds"\n'
+ROBOT = 'options:\n  dcf_path: "@BUS_CONFIG_PATH@"\n' + BUS  # ros2_canopen's installed layout, under $PREFIX
 TABLE = "Index,Sub-index,Name,Data type,Access,Default\n0x1000,0,Device type,UNSIGNED32,ro,0\n"
 
 
@@ -120,13 +122,12 @@ def synopsis(row: str) -> str:
 
 
 def shown_lines() -> list[str]:
-    """The `cantools-od ...` lines of the README's sh blocks that need only files of this folder (no git history,
-    no installed robot configuration), comments left out."""
+    """The `cantools-od ...` lines of the README's sh blocks, comments left out."""
     lines, inside = [], False
     for line in (ROOT / "README.md").read_text(encoding="utf-8").splitlines():
         if line.startswith("```"):
             inside = line == "```sh"
-        elif inside and line.startswith("cantools-od ") and "--git" not in line and "robot" not in line:
+        elif inside and line.startswith("cantools-od "):
             lines.append(" ".join(line.split(" #")[0].split()[1:]))
     return lines
 
@@ -134,14 +135,17 @@ def shown_lines() -> list[str]:
 def scratch(folder: Path) -> Path:
     """The files the README's lines name, in a folder of their own."""
     drive = (EXAMPLES / "cia402_drive.eds").read_bytes()
-    names = ["device.eds", "new.eds", "old.eds", "a.dcf", "b.dcf", "c.dcf", "eds/cia402_drive.eds"]
-    for name in [*names, "old/device.eds", "new/device.eds", "release-1.2/device.eds", "release-1.3/device.eds"]:
+    names = ["device.eds", "new.eds", "old.eds", "a.dcf", "b.dcf", "c.dcf", "eds/cia402_drive.eds", "od/device.eds"]
+    names += ["old/device.eds", "new/device.eds", "release-1.2/device.eds", "release-1.3/device.eds"]
+    names += ["config/robot/device.eds", "share/robot/config/robot/device.eds", "build/config/robot/.keep"]
+    for name in names:
         (folder / name).parent.mkdir(parents=True, exist_ok=True)
         (folder / name).write_bytes(drive)
     for number, name in enumerate(("a.dcf", "b.dcf", "c.dcf"), 2):
         text = (folder / name).read_text(encoding="utf-8").replace("[DeviceInfo]", "[DeviceComissioning]\nNodeID=")
         (folder / name).write_text(text.replace("NodeID=\n", f"NodeID={number}\n", 1), encoding="utf-8")
     (folder / "bus.yml").write_text(BUS, encoding="utf-8")
+    (folder / "config" / "robot" / "bus.yml").write_text(ROBOT, encoding="utf-8")
     (folder / "table.csv").write_text(TABLE, encoding="utf-8")
     header = SHARED / "third_party" / "CANopenNode" / "example" / "CO_driver_target.h"
     if header.is_file():
@@ -149,7 +153,20 @@ def scratch(folder: Path) -> Path:
         (folder / "src" / "CO_driver_target.h").write_bytes(header.read_bytes())
     ran = subprocess.run([*cli_command(), "convert", "device.eds", "-o", "device.xdd"], cwd=folder, capture_output=True)
     assert ran.returncode == 0, ran.stderr
+    _history(folder)
     return folder
+
+
+def _history(folder: Path) -> None:
+    """od/device.eds in a git repository: tagged v1.2.0 (also origin/main), then changed in HEAD."""
+    git = ["git", "-c", "user.name=t", "-c", "user.email=t@t", "-c", "commit.gpgsign=false"]
+    steps = [["init", "-q"], ["add", "od"], ["commit", "-qm", "v1.2.0"], ["tag", "v1.2.0"]]
+    steps += [["update-ref", "refs/remotes/origin/main", "HEAD"]]
+    for step in steps:
+        subprocess.run([*git, *step], cwd=folder, check=True, capture_output=True)
+    drive = folder / "od" / "device.eds"
+    drive.write_bytes(drive.read_bytes().replace(b"DataType=0x0006", b"DataType=0x0007", 1))
+    subprocess.run([*git, "commit", "-qam", "change"], cwd=folder, check=True, capture_output=True)
 
 
 def lines_to_run() -> list[str]:
@@ -165,6 +182,9 @@ def test_readme_command_lines_run_as_written(line: str, tmp_path: Path) -> None:
     if "CO_driver_target.h" in line and not (folder / "src").is_dir():
         pytest.skip("../shared/third_party is absent")
     command = f"{shlex.join(cli_command())} {line}"
-    ran = subprocess.run(command, shell=True, cwd=folder, capture_output=True, text=True, stdin=subprocess.DEVNULL)
+    env = {**os.environ, "PREFIX": str(folder)}
+    ran = subprocess.run(
+        command, shell=True, cwd=folder, env=env, capture_output=True, text=True, stdin=subprocess.DEVNULL
+    )
     assert ran.returncode in (0, 1), f"cantools-od {line}: exit {ran.returncode}\n{ran.stderr}"
     assert "Traceback" not in ran.stderr

@@ -48,7 +48,7 @@ def decode_as(data: bytes) -> tuple[str, str, str | None]:
         return data.decode("utf-8"), "utf-8", None
     except UnicodeDecodeError as error:
         where = f"byte 0x{data[error.start]:02X} at offset {error.start}"
-    dos = dos_word(data)
+    dos = _dos_word(data)
     if dos is not None:
         text = data.decode(DOS)
         shown = f"{text[dos.start() : dos.end()]!r}, not {data[dos.start() : dos.end()].decode(CP1252, ERRORS)!r}"
@@ -68,7 +68,7 @@ def _letter(byte: int, codec: str) -> str:
     return "" if not char.isalpha() else "lower" if char.islower() else "upper"
 
 
-def dos_word(data: bytes) -> re.Match[bytes] | None:
+def _dos_word(data: bytes) -> re.Match[bytes] | None:
     """The first word that shows `data` (not UTF-8) is DOS code page 850 text, or None when it is not shown (see
     the module's doc)."""
     shown: re.Match[bytes] | None = None

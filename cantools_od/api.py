@@ -140,7 +140,23 @@ def dumps(device: Device, fmt: Format = "eds", style: Style = "preserve", int_st
     try:
         return text.encode("ascii")
     except UnicodeEncodeError:
-        return text.encode("utf-8")  # names with non-ASCII letters are kept, not transliterated
+        return _non_ascii(device, text)
+
+
+def _non_ascii(device: Device, text: str) -> bytes:
+    """Text with non-ASCII letters, in the code page the file was read with when that was no UTF-8 and holds them:
+    which one a file is in is a guess (eds/decode.py), and written back in it, no byte of a text changes whatever
+    the guess; else UTF-8 (names with non-ASCII letters are kept, not transliterated)."""
+    from .eds.decode import decode_as, encode
+
+    if device._original is not None:
+        _, codec, _ = decode_as(device._original)
+        if codec != "utf-8":
+            try:
+                return encode(text, codec)
+            except UnicodeEncodeError:
+                pass
+    return text.encode("utf-8")
 
 
 def save(device: Device, path: str | os.PathLike[str], fmt: Format | None = None, style: Style = "preserve") -> bool:

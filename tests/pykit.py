@@ -13,6 +13,7 @@ import sys
 import unicodedata
 from collections.abc import Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
 from typing import Any
@@ -265,22 +266,63 @@ PICTURE = re.compile(r"[a-z0-9_]+\.[rt]pdo[0-9]+\.svg")
 CELL = re.compile(r"(?<!\\)\|")  # a pipe that splits a GFM table row (one not escaped)
 
 
+ANCHOR_TAG = re.compile(r'<a id="([0-9A-F]{4}(?:-[0-9A-F]{1,2})?)"></a>')
+"""The one piece of raw HTML a reference may hold: an empty element carrying an object's anchor by index."""
+
+
+def html_anchors(tokens: list[Any]) -> list[str]:
+    """The anchors of `<a id>` elements, in order; asserts that they are the only HTML and each is closed."""
+    found: list[str] = []
+    inline = [t for t in walk(tokens) if t.type in ("html_inline", "html_block")]
+    for opening, closing in zip(inline[::2], inline[1::2], strict=True):
+        match = ANCHOR_TAG.fullmatch(opening.content + closing.content)
+        assert opening.type == closing.type == "html_inline" and match, (opening.content, closing.content)
+        found.append(match.group(1))
+    return found
+
+
+@dataclass(frozen=True)
+class RenderedPage:
+    ids: set[str]
+    links: set[str]
+
+
+def rendered_ids(text: str) -> RenderedPage:
+    """The ids of the elements of the page rendered as HTML, and the in-page links' targets."""
+    from html.parser import HTMLParser
+
+    from markdown_it import MarkdownIt
+
+    page = RenderedPage(set(), set())
+
+    class Collect(HTMLParser):
+        def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+            found = dict(attrs)
+            if found.get("id"):
+                page.ids.add(str(found["id"]))
+            href = found.get("href") or ""
+            if tag == "a" and href.startswith("#"):
+                page.links.add(href[1:])
+
+    Collect().feed(MarkdownIt("commonmark").enable("table").render(text))
+    return page
+
+
 def check_markdown(text: str) -> list[Any]:
-    """Tokens of a valid document: no HTML, links only to anchors of the document, tables well-formed."""
+    """Tokens of a valid document: no HTML but anchors by index, links only to anchors of the document (a heading's
+    or an explicit one), tables well-formed."""
     check_markdown_lines(text)
     tokens = markdown_tokens(text)
     kinds = {t.type for t in walk(tokens)}
-    assert not kinds & {"html_inline", "html_block"}, "raw HTML"
     assert not kinds & {"em_open", "strong_open", "s_open"}, kinds
     for token in walk(tokens):  # the only images are the PDO pictures gen writes beside the page
         if token.type == "image":
             assert PICTURE.fullmatch(str(token.attrGet("src"))), token.attrGet("src")
     anchors: dict[str, int] = {}
-    for heading in headings(tokens):
-        slug = github_slug(heading)
-        count = anchors.get(slug, 0)
-        anchors[slug] = count + 1
-        assert count == 0, f"two headings have the anchor #{slug}"
+    for name in [github_slug(heading) for heading in headings(tokens)] + html_anchors(tokens):
+        count = anchors.get(name, 0)
+        anchors[name] = count + 1
+        assert count == 0, f"two places have the anchor #{name}"
     for token in walk(tokens):
         if token.type == "link_open":
             href = token.attrGet("href")
@@ -298,8 +340,8 @@ def check_markdown(text: str) -> list[Any]:
 
 
 def check_markdown_lines(text: str) -> None:
-    """Cheaper checks, without a parser: every table row has its header's cells, nothing unescaped opens HTML,
-    every link points to a heading of the document."""
+    """Cheaper checks, without a parser: every table row has its header's cells, nothing unescaped opens HTML but
+    the anchors by index, every link points to a heading or an anchor of the document."""
     header: list[str] | None = None
     for line in text.splitlines():
         if not line.startswith("|"):
@@ -310,9 +352,9 @@ def check_markdown_lines(text: str) -> None:
         if header is None:
             header = cells
         assert len(cells) == len(header), line
-    assert re.search(r"(?<!\\)<", text) is None, "unescaped <"
-    slugs = {github_slug(line.lstrip("#").strip()) for line in text.splitlines() if line.startswith("#")}
-    assert set(LINK.findall(text)) <= slugs
+    assert re.search(r"(?<!\\)<", ANCHOR_TAG.sub("", text)) is None, "unescaped <"
+    headed = [ANCHOR_TAG.sub("", line).lstrip("#").strip() for line in text.splitlines() if line.startswith("#")]
+    assert set(LINK.findall(text)) <= {github_slug(h) for h in headed} | set(ANCHOR_TAG.findall(text))
 
 
 @contextmanager

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -35,6 +36,17 @@ def test_dump_text_and_json() -> None:
     assert "6041" in result.stdout and "Statusword" in result.stdout
     data = json.loads(run("dump", EXAMPLES / "io_device.eds", "--format", "json").stdout)
     assert "4096" in data["objects"]
+
+
+def test_dump_node_id_resolves_nodeid_in_the_table() -> None:
+    """`dump --node-id 5` shows each `$NODEID` formula with its value, as the Markdown reference does."""
+    plain = run("dump", EXAMPLES / "io_device.eds")
+    given = run("dump", EXAMPLES / "io_device.eds", "--node-id", "5")
+    assert plain.returncode == given.returncode == 0, given.stderr
+    assert "$NODEID+0x180" in plain.stdout and "0x185" not in plain.stdout
+    rows = [line for line in given.stdout.splitlines() if "$NODEID" in line]
+    assert rows and all(re.search(r"0x[0-9A-F]+ \(\$NODEID", line) for line in rows), rows
+    assert "0x185 ($NODEID+0x180)" in given.stdout and "0x605 ($NODEID+0x600)" in given.stdout
 
 
 def test_unreadable_input_exits_2() -> None:

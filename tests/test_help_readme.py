@@ -4,14 +4,18 @@ names every file format and target its row names. A help text or a row that drif
 
 from __future__ import annotations
 
+import os
 import re
+import shlex
+import subprocess
+from pathlib import Path
 
 import click
 import pytest
 
 from cantools_od.cli import COMMANDS, main
 
-from support import ROOT
+from support import EXAMPLES, ROOT, SHARED, cli_command
 
 FORMATS = ("EDS", "DCF", "XDD", "XDC", "JSON")
 
@@ -85,3 +89,102 @@ def test_help_and_row_name_every_choice(name: str) -> None:
             if param.name == "targets":
                 top = COMMANDS[name][1].replace("OD.h/OD.c", "")
                 assert all(said(top, choice) for choice in choices), (top, choices)
+
+
+# Every command line the README shows runs as written ------------------------------------------------------------
+
+PLACEHOLDERS = {
+    "FILE...": "device.eds",
+    "FILE": "device.eds",
+    "IN": "device.eds",
+    "OUT": "out.json",
+    "OUTDIR": "out",
+    "OLD": "device.eds",
+    "NEW": "new.eds",
+    "N": "5",
+    "BUS.yml": "bus.yml",
+    "SOURCE...": "table.csv",
+    "OUT.eds": "imported.eds",
+}
+BUS = 'master:\n  node_id: 1\ndevice:\n  node_id: 5\n  dcf: "device.eds"\n'
+ROBOT = 'options:\n  dcf_path: "@BUS_CONFIG_PATH@"\n' + BUS  # ros2_canopen's installed layout, under $PREFIX
+TABLE = "Index,Sub-index,Name,Data type,Access,Default\n0x1000,0,Device type,UNSIGNED32,ro,0\n"
+
+
+def synopsis(row: str) -> str:
+    """The row's command as a user types it with nothing optional: `[...]` left out, placeholders filled in."""
+    written = re.match(r"\| `cantools-od ([^`]*)`", row)
+    assert written is not None, row
+    text = written.group(1).replace("\\|", "|")
+    while re.search(r"\[[^][]*\]", text):
+        text = re.sub(r"\s*\[[^][]*\]", "", text)
+    return " ".join(PLACEHOLDERS.get(word, word) for word in text.split())
+
+
+def shown_lines() -> list[str]:
+    """The `cantools-od ...` lines of the README's sh blocks, comments left out."""
+    lines, inside = [], False
+    for line in (ROOT / "README.md").read_text(encoding="utf-8").splitlines():
+        if line.startswith("```"):
+            inside = line == "```sh"
+        elif inside and line.startswith("cantools-od "):
+            lines.append(" ".join(line.split(" #")[0].split()[1:]))
+    return lines
+
+
+def scratch(folder: Path) -> Path:
+    """The files the README's lines name, in a folder of their own."""
+    drive = (EXAMPLES / "cia402_drive.eds").read_bytes()
+    names = ["device.eds", "new.eds", "old.eds", "a.dcf", "b.dcf", "c.dcf", "eds/cia402_drive.eds", "od/device.eds"]
+    names += ["old/device.eds", "new/device.eds", "release-1.2/device.eds", "release-1.3/device.eds"]
+    names += ["config/robot/device.eds", "share/robot/config/robot/device.eds", "build/config/robot/.keep"]
+    for name in names:
+        (folder / name).parent.mkdir(parents=True, exist_ok=True)
+        (folder / name).write_bytes(drive)
+    for number, name in enumerate(("a.dcf", "b.dcf", "c.dcf"), 2):
+        text = (folder / name).read_text(encoding="utf-8").replace("[DeviceInfo]", "[DeviceComissioning]\nNodeID=")
+        (folder / name).write_text(text.replace("NodeID=\n", f"NodeID={number}\n", 1), encoding="utf-8")
+    (folder / "bus.yml").write_text(BUS, encoding="utf-8")
+    (folder / "config" / "robot" / "bus.yml").write_text(ROBOT, encoding="utf-8")
+    (folder / "table.csv").write_text(TABLE, encoding="utf-8")
+    header = SHARED / "third_party" / "CANopenNode" / "example" / "CO_driver_target.h"
+    if header.is_file():
+        (folder / "src").mkdir()
+        (folder / "src" / "CO_driver_target.h").write_bytes(header.read_bytes())
+    ran = subprocess.run([*cli_command(), "convert", "device.eds", "-o", "device.xdd"], cwd=folder, capture_output=True)
+    assert ran.returncode == 0, ran.stderr
+    _history(folder)
+    return folder
+
+
+def _history(folder: Path) -> None:
+    """od/device.eds in a git repository: tagged v1.2.0 (also origin/main), then changed in HEAD."""
+    git = ["git", "-c", "user.name=t", "-c", "user.email=t@t", "-c", "commit.gpgsign=false"]
+    steps = [["init", "-q"], ["add", "od"], ["commit", "-qm", "v1.2.0"], ["tag", "v1.2.0"]]
+    steps += [["update-ref", "refs/remotes/origin/main", "HEAD"]]
+    for step in steps:
+        subprocess.run([*git, *step], cwd=folder, check=True, capture_output=True)
+    drive = folder / "od" / "device.eds"
+    drive.write_bytes(drive.read_bytes().replace(b"DataType=0x0006", b"DataType=0x0007", 1))
+    subprocess.run([*git, "commit", "-qam", "change"], cwd=folder, check=True, capture_output=True)
+
+
+def lines_to_run() -> list[str]:
+    return [synopsis(row) for row in ROWS.values()] + shown_lines()
+
+
+@pytest.mark.parametrize("line", lines_to_run())
+def test_readme_command_lines_run_as_written(line: str, tmp_path: Path) -> None:
+    """Why: the table's `gen` line failed as written (`-t dbc` without `--node-id`), and so did `network BUS.yml`.
+    Each line, run by the shell in a folder holding the files it names, exits 0, or 1 for findings: never 2, a
+    usage error."""
+    folder = scratch(tmp_path)
+    if "CO_driver_target.h" in line and not (folder / "src").is_dir():
+        pytest.skip("../shared/third_party is absent")
+    command = f"{shlex.join(cli_command())} {line}"
+    env = {**os.environ, "PREFIX": str(folder)}
+    ran = subprocess.run(
+        command, shell=True, cwd=folder, env=env, capture_output=True, text=True, stdin=subprocess.DEVNULL
+    )
+    assert ran.returncode in (0, 1), f"cantools-od {line}: exit {ran.returncode}\n{ran.stderr}"
+    assert "Traceback" not in ran.stderr

@@ -14,7 +14,7 @@ import pytest
 import cantools_od
 from cantools_od.sniff import NotADeviceDescription
 
-from support import EXAMPLES, cli_command
+from support import EXAMPLES, SHARED, cli_command
 
 DRIVE = (EXAMPLES / "cia402_drive.eds").read_bytes()
 
@@ -189,7 +189,53 @@ def test_fmt_still_rewrites_a_file_all_in_windows_1252(tmp_path: Path) -> None:
     written(tmp_path, "legacy.eds", data)
     result = run("fmt", "legacy.eds", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
-    assert "Description=Müller" in (tmp_path / "legacy.eds").read_text(encoding="utf-8")
+    assert "Description=Müller" in (tmp_path / "legacy.eds").read_text(encoding="cp1252")  # in its code page
+
+
+# 4b. a file in a DOS code page (#39: Faulhaber's `Sch\x94naich` became `Sch”naich`) -------------------
+
+FAULHABER = SHARED / "eds-corpus" / "eds" / "faulhaber__605.3150.71-A-EK-3-60.eds"
+
+
+def _lines_with_high_bytes(data: bytes) -> list[bytes]:
+    return [line.rstrip(b"\r") for line in data.split(b"\n") if re.search(rb"[\x80-\xff]", line)]
+
+
+def test_a_dos_code_page_file_keeps_every_character(tmp_path: Path) -> None:
+    """The real file: read as code page 850 (Schönaich, the maker's seat, postcode 71101), said so by EDS100;
+    `fmt` and `convert` to EDS or DCF leave the bytes of its text as written; XDD and JSON say Schönaich."""
+    if not FAULHABER.is_file():
+        pytest.skip("../shared/eds-corpus is absent")
+    original = FAULHABER.read_bytes()
+    assert b"Sch\x94naich" in original
+    path = written(tmp_path, "drive.eds", original)
+    lint = run("lint", "drive.eds", cwd=tmp_path)
+    assert "read as DOS code page 850 ('Schönaich', not 'Sch”naich') [EDS100]" in lint.stdout, lint.stdout
+    for target in ("copy.eds", "copy.dcf"):
+        converted = run("convert", "drive.eds", "-o", target, "--node-id", "5", cwd=tmp_path)
+        assert converted.returncode == 0, converted.stderr
+        assert _lines_with_high_bytes((tmp_path / target).read_bytes()) == _lines_with_high_bytes(original)
+    for target in ("copy.xdd", "copy.json"):
+        assert run("convert", "drive.eds", "-o", target, cwd=tmp_path).returncode == 0
+        text = (tmp_path / target).read_text(encoding="utf-8")
+        assert "71101 Schönaich" in text and "Sch”naich" not in text.replace("not 'Sch”naich'", "")
+    diff = run("fmt", "--check", "--diff", "drive.eds", cwd=tmp_path)
+    assert "naich" not in diff.stdout and "Traceback" not in diff.stderr
+    result = run("fmt", "drive.eds", cwd=tmp_path)
+    assert result.returncode == 0 and "reformatted drive.eds" in result.stderr, result.stderr
+    formatted = path.read_bytes()
+    assert formatted != original and _lines_with_high_bytes(formatted) == _lines_with_high_bytes(original)
+
+
+@pytest.mark.parametrize("byte", range(0x80, 0x100), ids=lambda byte: f"{byte:02X}")
+def test_fmt_writes_every_byte_of_text_back_as_it_was(byte: int) -> None:
+    """Whatever code page a byte is taken for, inside a word or beside one, `fmt` (the canonical writer) writes it
+    back: a guess never turns one character into another."""
+    for word in (b"Sch%cnaich", b"%cSpeed%c", b"Sensor%cValue", b"f%cr Gr%c%ce"):
+        text = word.replace(b"%c", bytes([byte]))
+        data = replaced(DRIVE, b"Description=", b"Description=" + text + b" ")
+        formatted = cantools_od.dumps(cantools_od.loads(data, source="t.eds"), "eds", "canonical")
+        assert b"Description=" + text in formatted, (text, formatted[:400])
 
 
 # 5. numbers of any length -----------------------------------------------------------------------

@@ -191,8 +191,8 @@ def refusal(device: Device, name: str) -> str:
     found = reader_refusal(device)
     if found is None:
         return ""
-    where = found.location  # named as the user named the file: under --git its file is a temporary copy
-    return f"{name}:{where.line}:{where.column}: error: {found.message} [{found.code}]; nothing compared"
+    line, column = found.location.shown  # named as the user named the file: under --git it is a temporary copy
+    return f"{name}:{line}:{column}: error: {found.message} [{found.code}]; nothing compared"
 
 
 def _note_errors(device: Device, name: str) -> None:

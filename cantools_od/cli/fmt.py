@@ -127,8 +127,9 @@ def _format(task: _Task) -> _Done:
 
 def _diff(name: str, original: bytes, formatted: bytes, notes: list[str]) -> str:
     """A unified diff of the lines' text; a change of line ends alone is one note, not every line twice."""
-    before = original.decode("utf-8", "replace")
-    after = formatted.decode("utf-8")
+    from ..eds.decode import decode_as
+
+    before, after = decode_as(original)[0], decode_as(formatted)[0]  # each in the code page it is written in
     old_ends = {_ending(line) for line in before.splitlines(keepends=True)} - {"", "LF"}
     if old_ends:
         notes.append(f"{name}: note: line ends {'/'.join(sorted(old_ends))} become LF")

@@ -19,8 +19,13 @@ if TYPE_CHECKING:
     from ..model import Device
 
 
+def _typed(values: tuple[str, ...]) -> tuple[str, ...]:
+    """The comma-separated selectors, as typed."""
+    return tuple(code.strip() for value in values for code in value.split(",") if code.strip())
+
+
 def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
-    return tuple(code.strip().upper() for value in values for code in value.split(",") if code.strip())
+    return tuple(code.upper() for code in _typed(values))
 
 
 @click.command(name="lint")
@@ -74,7 +79,7 @@ def command(
     from ..names import UnknownName
 
     try:
-        check_selectors(_codes(select) + _codes(ignore))
+        check_selectors(_typed(select) + _typed(ignore))
     except UnknownName as error:
         click.echo(f"error: --select/--ignore: {error}", err=True)
         sys.exit(EXIT_USAGE)

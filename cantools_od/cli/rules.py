@@ -14,7 +14,9 @@ from .common import EXIT_USAGE
 def command(code: str | None) -> None:
     """List every code cantools-od can print, or explain CODE (a code or its name)."""
     from ..lint.codes import codes, find
+    from ..lint.config import RULE_CUTOFF
     from ..lint.ruledocs import explain
+    from ..names import suggest
 
     if code is None:
         for found in codes().values():
@@ -24,7 +26,9 @@ def command(code: str | None) -> None:
         return
     explained = find(code)
     if explained is None:
-        click.echo(f"error: no rule {code}; `cantools-od rules` lists them", err=True)
+        known = [name for found in codes().values() for name in (found.code, found.name)]
+        closest = suggest(code, known, "`cantools-od rules` lists them", RULE_CUTOFF)
+        click.echo(f"error: no rule {code}; {closest}", err=True)
         sys.exit(EXIT_USAGE)
     rule = explained.rule
     click.echo(f"{rule.code} ({explained.name}): {rule.summary}\n")

@@ -373,13 +373,20 @@ def _object_list(section: ini.IniSection, report: Report) -> ObjectList:
         except ValueError:
             index = None
         if not isinstance(index, int) or not 0 <= index <= 0xFFFF:
-            report.error("EDS030", f"[{section.name}] {position}={text}: not an object index", section.line)
+            line, column = _list_value_at(section, position)
+            report.error("EDS030", f"[{section.name}] {position}={text}: not an object index", line, column)
             collected.extra[str(position)] = text
             continue
         entries[position] = index
     found = construct(ObjectList, {"supported_objects": count, "entries": entries, **collected.common()})
     object.__setattr__(found, "__pydantic_private__", {"_repeats": _repeated_positions(section)})
     return found
+
+
+def _list_value_at(section: ini.IniSection, position: int) -> tuple[int, int]:
+    """Where the value of the list's entry `position` is written (its last writing, the one read)."""
+    written = [(entry.line, entry.value_col) for entry in section.entries if keys.list_number(entry.key) == position]
+    return written[-1] if written else (section.line, section.column)
 
 
 def _repeated_positions(section: ini.IniSection) -> dict[int, list[tuple[int, int, int]]]:

@@ -190,16 +190,21 @@ def _codes(table: dict[str, object], key: str, path: Path) -> tuple[str, ...]:
     value = table.get(key, [])
     if not isinstance(value, list) or not all(isinstance(code, str) for code in value):
         raise ValueError(f"{path}: [tool.cantools-od] {key} must be a list of rule codes, prefixes or families")
-    codes = tuple(code.strip().upper() for code in value)
     try:
-        check_selectors(codes)
+        check_selectors(tuple(code.strip() for code in value))
     except UnknownName as error:
         raise ValueError(f"{path}: [tool.cantools-od] {key}: {error}") from None
-    return codes
+    return tuple(code.strip().upper() for code in value)
+
+
+RULE_CUTOFF = 0.6
+"""How close a misspelt rule code, name or family must be to be suggested: codes, names and families together
+are many, and at difflib's usual 0.6 a stray word (`NOPE`) is not offered `canopennode`."""
 
 
 def check_selectors(selectors: tuple[str, ...]) -> None:
-    """Raise UnknownName for a selector that is no rule code, code prefix (`EDS`, `PDO0`) or family name."""
+    """Raise UnknownName for a selector (as typed, any case) that is no rule code, rule name, code prefix (`EDS`,
+    `PDO0`) or family name; it names the closest of all of them (`line-to-long`: did you mean line-too-long?)."""
     from .codes import FAMILIES, load
     from .codes import codes as all_codes
     from .rules import RULES
@@ -214,6 +219,6 @@ def check_selectors(selectors: tuple[str, ...]) -> None:
     names = {code.name for code in all_codes().values()}  # kebab-case, as `rules` prints them
 
     def accepted(name: str) -> bool:
-        return name in prefixes or name.lower() in families or name.lower() in names
+        return name.upper() in codes | prefixes or name.lower() in families | names
 
-    check_names("rule code", selectors, codes, accepts=accepted, hint=hint)
+    check_names("rule code", selectors, codes | names | families, accepted, hint, RULE_CUTOFF)

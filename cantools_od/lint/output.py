@@ -32,10 +32,11 @@ def _fix_note(finding: Finding) -> str:
 def as_json(findings: list[Finding]) -> str:
     items: list[dict[str, Any]] = []
     for f in findings:
+        line, column = f.location.shown
         item: dict[str, Any] = {
             "file": f.location.file,
-            "line": f.location.line,
-            "column": f.location.column,
+            "line": line,
+            "column": column,
             "code": f.code,
             "severity": f.severity.value,
             "message": f.message,
@@ -70,14 +71,11 @@ def sarif(findings: list[Finding]) -> str:
     index = {rule["id"]: n for n, rule in enumerate(rules)}
     results = []
     for f in findings:
-        region: dict[str, int] = {}
-        if f.location.line > 0:
-            region["startLine"] = f.location.line
-            if f.location.column > 0:
-                region["startColumn"] = f.location.column
-        location: dict[str, Any] = {"artifactLocation": {"uri": f.location.file}}
-        if region:
-            location["region"] = region
+        line, column = f.location.shown
+        location: dict[str, Any] = {
+            "artifactLocation": {"uri": f.location.file},
+            "region": {"startLine": line, "startColumn": column},
+        }
         result: dict[str, Any] = {
             "ruleId": f.code,
             "level": _SARIF_LEVEL[f.severity],
@@ -115,8 +113,6 @@ def github(findings: list[Finding]) -> str:
     for f in findings:
         message = f.message.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
         file = f.location.file.replace(",", "%2C").replace(":", "%3A")
-        lines.append(
-            f"::{_GITHUB_LEVEL[f.severity]} file={file},line={f.location.line},col={f.location.column},"
-            f"title={f.code}::{message}"
-        )
+        line, column = f.location.shown
+        lines.append(f"::{_GITHUB_LEVEL[f.severity]} file={file},line={line},col={column},title={f.code}::{message}")
     return "\n".join(lines) + ("\n" if lines else "")

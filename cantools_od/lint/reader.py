@@ -113,13 +113,15 @@ declare(
     W,
     "File is not UTF-8",
     """
-The file contains bytes that are not UTF-8; it was read as Windows-1252 (or Latin-1). Other
-tools may read those characters differently. Save the file as ASCII or UTF-8.""",
+The file contains bytes that are not UTF-8; it was read as DOS code page 850 when a word says so (`Sch\\x94naich`
+is Schönaich there, `Sch”naich` in Windows-1252), else as Windows-1252. Other tools may read those
+characters differently. Save the file as ASCII or UTF-8.""",
     "; encoding: cp1252\n; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
     "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fixed="; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
     "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
-    fix_safety="No automatic fix: `fmt` writes the file back as UTF-8.",
+    fix_safety="No automatic fix: which code page a file is in is a guess, so `fmt` writes it back in the one it "
+    "was read with and no byte of its text changes; save it as UTF-8 yourself.",
 )
 declare(
     "EDS101",

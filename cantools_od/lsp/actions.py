@@ -96,7 +96,8 @@ def formatted(uri: str, analysis: Analysis, encoding: Encoding) -> str:
     except ValueError as error:
         raise NotFormatted(f"configuration: {error}") from None
     fresh = read(uri, encoding.bytes(analysis.text))  # dumps may not change the device linted, but it is not ours
-    return dumps(fresh, format_for(path), style="canonical", int_style=style).decode("utf-8")
+    # in the file's code page when it is not UTF-8 (api.dumps), read back the same way
+    return decode_as(dumps(fresh, format_for(path), style="canonical", int_style=style))[0]
 
 
 def format_edits(uri: str, analysis: Analysis, encoding: Encoding, within: types.Range | None) -> list[types.TextEdit]:

@@ -18,7 +18,7 @@ class Severity(StrEnum):
 
 
 class Location(BaseModel):
-    """A place in a source file; line and column count from 1 (0 = unknown)."""
+    """A place in a source file; line and column count from 1 (0 = unknown: shown as `shown` says)."""
 
     model_config = ConfigDict(frozen=True, defer_build=True)
 
@@ -26,8 +26,17 @@ class Location(BaseModel):
     line: int = 0
     column: int = 0
 
+    @property
+    def shown(self) -> tuple[int, int]:
+        """(line, column) as every output shows them, from 1: a place known by its line alone is the line's first
+        column, and one not known within the file (a model from JSON keeps no positions) is the file's start, 1:1."""
+        if self.line < 1:
+            return 1, 1
+        return self.line, max(self.column, 1)
+
     def __str__(self) -> str:
-        return f"{self.file or '<input>'}:{self.line}:{self.column}"
+        line, column = self.shown
+        return f"{self.file or '<input>'}:{line}:{column}"
 
 
 def location(file: str, line: int, column: int) -> Location:

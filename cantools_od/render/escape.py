@@ -95,11 +95,6 @@ def markdown_text(text: str) -> str:
     return _MARKDOWN_SPECIAL.sub(_markdown_escape, _one_line(text))
 
 
-def markdown_plain(text: str) -> str:
-    """The text `markdown_text(text)` renders to."""
-    return _one_line(text)
-
-
 def markdown_cell(text: str) -> str:
     """A GFM table cell: like markdown_text, and never empty-looking (an em dash stands for no text)."""
     return markdown_text(text) or "\u2014"

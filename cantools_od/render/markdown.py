@@ -1,19 +1,17 @@
 """Markdown reference documents: `<name>.md`, from a DeviceView.
 
-The document is CommonMark with GFM tables and no raw HTML. Every text taken from the file goes
-through `escape.markdown_text`/`markdown_cell` and renders literally; everything else in it is made
-here from numbers, identifiers and fixed words.
+The document is CommonMark with GFM tables. Every text taken from the file goes through
+`escape.markdown_text`/`markdown_cell` and renders literally; everything else in it is made here from
+numbers, identifiers and fixed words. Its only raw HTML is the anchors (`anchors.anchor_tag`).
 
-Anchors: each object's section is headed ``Object XXXXh: <name>`` (upper-case hex index), whose GFM
-anchor is ``#object-xxxxh-<name as GitHub spells it in an anchor>``, made here the way GitHub makes it so
-that every link in the document reaches its heading; each PDO's section is headed with its name
-(``#rpdo1``, ``#tpdo1``). The title, ``Object dictionary: <product>``, has the anchor
-``object-dictionary-...`` and so cannot take one of the others.
+Anchors: an object's are by index only (`#1400` for object 1400h, `#1400-1` for its sub-index 1, see
+`anchors.py`), carried by an empty `<a id>` at the start of the object's heading and of each row of its
+table of sub-objects: the heading's own GFM anchor holds the name and would change with it. Each PDO's
+section is headed with its name (`#rpdo1`, `#tpdo1`). Every link of the document uses these anchors.
 """
 
 from __future__ import annotations
 
-import unicodedata
 from collections.abc import Iterable
 from pathlib import Path
 
@@ -22,7 +20,8 @@ from ..model.datatypes import standard_type
 from ..views.bitfield import diagram
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
 from . import Each, stream_template, whole
-from .escape import markdown_cell, markdown_plain, markdown_text
+from .anchors import anchor_tag, object_anchor
+from .escape import markdown_cell, markdown_text
 from .prose import count
 from .svg import sheet
 
@@ -51,25 +50,21 @@ def render(view: DeviceView) -> dict[str, str]:
 
 
 def heading(index: int, name: str) -> str:
-    """The text of an object's section heading (Markdown)."""
+    """The text of an object's section heading (Markdown), with the object's anchor."""
     shown = markdown_text(name)
-    return f"Object {index:04X}h: {shown}" if shown else f"Object {index:04X}h"
+    tag = anchor_tag(object_anchor(index))
+    return f"{tag}Object {index:04X}h: {shown}" if shown else f"{tag}Object {index:04X}h"
 
 
-def anchor(index: int, name: str) -> str:
-    """GitHub's anchor of the heading: lower case; letters, digits, marks, `_` and `-` kept; blanks to `-`."""
-    text = f"Object {index:04X}h: {markdown_plain(name)}".lower()
-    return "".join("-" if c in " -" else c for c in text if c in " -_" or unicodedata.category(c)[0] in "LNM")
+def _anchors(view: DeviceView) -> set[int]:
+    """The objects the document has a section of."""
+    return {obj.index for obj in view.objects}
 
 
-def _anchors(view: DeviceView) -> dict[int, str]:
-    return {obj.index: anchor(obj.index, obj.name) for obj in view.objects}
-
-
-def link(index: int, anchors: dict[int, str]) -> str:
-    """A link to the object when the document has its section, else its index marked absent."""
-    target = anchors.get(index)
-    return f"[{index:04X}h](#{target})" if target is not None else f"{index:04X}h (absent)"
+def link(index: int, anchors: set[int], subindex: int | None = None) -> str:
+    """A link to the object (or its sub-object) when the document has its section, else its index marked absent."""
+    shown = f"{index:04X}h" + (f" sub {subindex:X}h" if subindex is not None else "")
+    return f"[{shown}](#{object_anchor(index, subindex)})" if index in anchors else f"{shown} (absent)"
 
 
 def _source(view: DeviceView) -> str:
@@ -91,7 +86,8 @@ def _type_row(view: DeviceView, obj: Object) -> list[str]:
         value = f"{obj.default} bits"
     where = f"{_source(view)}:{obj.origin.line}" if obj.origin is not None and obj.origin.line else ""
     name = markdown_cell(obj.name) or NONE
-    return [f"{obj.index:04X}h", name, obj.kind.name, type_name, value, markdown_text(where) or NONE]
+    index = anchor_tag(object_anchor(obj.index)) + f"{obj.index:04X}h"
+    return [index, name, obj.kind.name, type_name, value, markdown_text(where) or NONE]
 
 
 def _document(view: DeviceView) -> dict[str, object]:
@@ -163,7 +159,7 @@ def _cob_id(pdo: PdoView) -> str:
     return text + (" (not valid)" if value & VALID_BIT else "")
 
 
-def _pdo_row(pdo: PdoView, anchors: dict[int, str]) -> list[str]:
+def _pdo_row(pdo: PdoView, anchors: set[int]) -> list[str]:
     p = pdo.pdo
     return [
         f"[{p.name}](#{pdo.struct_name})",
@@ -176,7 +172,7 @@ def _pdo_row(pdo: PdoView, anchors: dict[int, str]) -> list[str]:
     ]
 
 
-def _pdo(pdo: PdoView, anchors: dict[int, str]) -> dict[str, object]:
+def _pdo(pdo: PdoView, anchors: set[int]) -> dict[str, object]:
     p = pdo.pdo
     transmission = f"transmission type {p.transmission_type}" if p.transmission_type is not None else "no type"
     summary = (
@@ -192,7 +188,7 @@ def _pdo(pdo: PdoView, anchors: dict[int, str]) -> dict[str, object]:
             entries[-1] += [type_name, NONE]
             continue
         target = entry.entry
-        where = link(target.index, anchors) + (f" sub {target.subindex:X}h" if target.member is not None else "")
+        where = link(target.index, anchors, target.subindex if target.member is not None else None)
         entries.append([str(number), f"{entry.bit_offset}..{last}", str(entry.bit_length), where])
         entries[-1] += [markdown_cell(target.name), type_name, f"`{target.flat}`"]
     return {
@@ -307,7 +303,7 @@ def _where(view: DeviceView, entry: EntryView) -> str:
 
 
 def _object_row(
-    view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], list[str]], anchors: dict[int, str]
+    view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], list[str]], anchors: set[int]
 ) -> list[str]:
     first = obj.entries[0] if obj.entries else None
     name = markdown_cell(obj.name)
@@ -337,7 +333,7 @@ def _object(view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], lis
     for entry in obj.entries:
         rows.append(
             [
-                f"{entry.subindex:X}h",
+                anchor_tag(object_anchor(entry.index, entry.subindex)) + f"{entry.subindex:X}h",
                 markdown_cell(entry.name),
                 _type(view.device, entry),
                 entry.access.value if entry.access else NONE,

@@ -8,8 +8,9 @@ from ..model import Device, Object, Origin, RawValue, TimeValue, Value, Variable
 from ..model.values import NodeIdExpr
 
 
-def display(value: Value | None) -> str:
-    """A value as a person reads it."""
+def display(value: Value | None, node_id: int | None = None) -> str:
+    """A value as a person reads it; a `$NODEID` formula with its value when the node-ID is known (given, or
+    the DCF's), as the Markdown reference shows it."""
     if value is None:
         return ""
     if isinstance(value, bool):
@@ -19,7 +20,7 @@ def display(value: Value | None) -> str:
     if isinstance(value, bytes):
         return value.hex().upper()
     if isinstance(value, NodeIdExpr):
-        return value.canonical()
+        return value.canonical() if node_id is None else f"0x{value.resolve(node_id):X} ({value.canonical()})"
     if isinstance(value, TimeValue):
         return f"{value.days} d {value.ms} ms"
     if isinstance(value, RawValue):
@@ -31,10 +32,11 @@ def _row(device: Device, index: str, sub: str, var: Variable, owner: Object, kin
     dtype = device.entry_type(var, owner)
     type_name = kind or (dtype.name if dtype else (f"0x{var.data_type:04X}" if var.data_type is not None else ""))
     access = var.access.value if var.access else ""
-    value = display(var.parameter_value if var.parameter_value is not None else var.default)
+    nid = device.node_id
+    value = display(var.parameter_value if var.parameter_value is not None else var.default, nid)
     limits = ""
     if var.low_limit is not None or var.high_limit is not None:
-        limits = f"{display(var.low_limit)}..{display(var.high_limit)}"
+        limits = f"{display(var.low_limit, nid)}..{display(var.high_limit, nid)}"
     pdo = "yes" if var.pdo_mapping else ""
     origin = _where(device, var.origin or owner.origin)
     return [index, sub, var.name, type_name, access, pdo, value, limits, origin]

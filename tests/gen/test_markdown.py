@@ -17,11 +17,13 @@ from pykit import (
     generate,
     github_slug,
     headings,
+    html_anchors,
     markdown_tokens,
     odd_bits_eds,
     pdo,
     plain,
     record,
+    rendered_ids,
     run_gen,
     tables,
     var,
@@ -68,7 +70,7 @@ def test_examples_are_valid_documents(name: str) -> None:
     tokens = check_markdown(text)
     found = tables(tokens)
     objects = next(t for t in found if t[0][:2] == ["Index", "Name"])
-    assert len(objects) - 1 == text.count("\n### Object ")
+    assert len(objects) - 1 == text.count('\n### <a id="')
     assert all(re.fullmatch(r"[0-9A-F]{4}h", row[0]) for row in objects[1:])
 
 
@@ -143,23 +145,43 @@ def test_hostile_text_renders_literally(tmp_path: Path) -> None:
     assert [row[4] for row in tpdo1[1:]] == HOSTILE[:2]
 
 
-def test_object_headings_carry_names_and_every_link_reaches_its_heading(tmp_path: Path) -> None:
+def test_object_headings_carry_names_and_anchors_by_index_only(tmp_path: Path) -> None:
+    """Why: the anchors were GitHub's slugs of the headings (`#object-1400h-rpdo-communication-parameter-1`), so a
+    rename broke every link into the page, though the page said they never depend on names."""
     path = tmp_path / "odd_bits.eds"
     path.write_text(odd_bits_eds(), encoding="ascii")
-    before = headings(markdown_tokens(generate(path, "markdown", "odd_bits")))
+    before_text = generate(path, "markdown", "odd_bits")
+    before = headings(markdown_tokens(before_text))
     assert "Object 2100h: Odd values" in before
     path.write_text(odd_bits_eds().replace("Odd values", "Renamed: odd *values*"), encoding="ascii")
     after_text = generate(path, "markdown", "odd_bits")
-    after = headings(check_markdown(after_text))
+    tokens = check_markdown(after_text)
+    after = headings(tokens)
     assert "Object 2100h: Renamed: odd *values*" in after  # the name as written, not as Markdown
-    slugs = [github_slug(h) for h in after]
     changed = [(b, a) for b, a in zip(before, after, strict=True) if b != a]
     assert changed == [("Object 2100h: Odd values", "Object 2100h: Renamed: odd *values*")]
-    assert "object-2100h-renamed-odd-values" in slugs and "tpdo4" in slugs and "rpdo2" in slugs
-    objects = [s for s in slugs[1:] if s.startswith("object-") and s != "object-details"]
-    assert objects and all(re.match(r"object-[0-9a-f]{4}h(-|$)", s) for s in objects)
-    assert set(LINK.findall(after_text)) <= set(slugs)
-    assert "](#object-2100h-renamed-odd-values)" in after_text
+    assert html_anchors(markdown_tokens(before_text)) == html_anchors(tokens)
+    assert set(LINK.findall(before_text)) == set(LINK.findall(after_text))
+    assert "](#2100)" in after_text and '### <a id="2100"></a>Object 2100h: Renamed' in after_text
+    assert not [link for link in LINK.findall(after_text) if re.match(r"object-[0-9a-f]{4}h", link)]
+    view = view_of(path, "odd_bits")
+    objects = [f"{obj.index:04X}" for obj in view.objects]
+    subs = [f"{obj.index:04X}-{entry.subindex:X}" for obj in view.objects for entry in obj.entries]
+    assert set(objects + subs) <= set(html_anchors(tokens))
+    assert {"tpdo4", "rpdo2"} <= {github_slug(h) for h in after}
+
+
+@pytest.mark.parametrize("name", EXAMPLE_FILES)
+def test_rendered_page_has_every_anchor_its_links_name(name: str) -> None:
+    """The page as HTML (CommonMark keeps inline HTML, as GitHub does for `<a id>`): every in-page link reaches an
+    element of that id or a heading; each object's and sub-object's anchor is its index, `1400` and `1400-1`."""
+    text = generate(EXAMPLES / name, "markdown", Path(name).stem)
+    page = rendered_ids(text)
+    assert page.links and page.links <= page.ids | {github_slug(h) for h in headings(markdown_tokens(text))}
+    assert {"1400", "1400-1", "1800-1", "1A00-1"} <= page.ids if name == "cia402_drive.eds" else {"1400-1"} <= page.ids
+    mapped = re.findall(r"\[([0-9A-F]{4})h sub ([0-9A-F]+)h\]\(#([0-9A-F]{4}-[0-9A-F]+)\)", text)
+    assert all(f"{index}-{sub}" == target for index, sub, target in mapped)
+    assert mapped or name == "cia402_drive.eds"  # its PDOs map VAR objects only
 
 
 def test_counts_in_prose_are_singular_for_one(tmp_path: Path) -> None:
@@ -224,5 +246,5 @@ def test_type_definitions_are_in_the_reference(tmp_path: Path) -> None:
     check_markdown(text)
     found = {row[0]: row for table in tables(markdown_tokens(text)) for row in table[1:]}
     assert found["0041h"][1:5] == ["Motor parameters", "DEFTYPE", "UNSIGNED32", "2048 bits"]
-    assert "### Object 0042h: Pair type" in text
+    assert '### <a id="0042"></a>Object 0042h: Pair type' in text
     assert "[Type definitions](#type-definitions)" in text and "Type definitions" in headings(markdown_tokens(text))

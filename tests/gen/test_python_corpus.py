@@ -60,12 +60,13 @@ def _sweep(path: Path, folder: Path, parse: bool) -> str:
     indices = {index for index, obj in device.objects.items() if obj.kind.name not in ("NULL", "DEFTYPE")}
     for index in indices:
         shown = markdown_text(device.objects[index].name)
-        heading = f"### Object {index:04X}h: {shown}\n" if shown else f"### Object {index:04X}h\n"
-        assert f"\n{heading}" in text and f"](#object-{index:04x}h" in text
+        tag = f'<a id="{index:04X}"></a>'
+        heading = f"### {tag}Object {index:04X}h: {shown}\n" if shown else f"### {tag}Object {index:04X}h\n"
+        assert f"\n{heading}" in text and f"](#{index:04X})" in text
         assert hasattr(module, f"INDEX_{module_identifier(module, index)}")
     types = text.partition("\n## Type definitions\n")[2]
     for index in device.objects.keys() - indices:  # NULL and DEFTYPE objects: in the table of type definitions
-        assert f"\n| {index:04X}h | " in types, f"{index:04X}h is not in the Markdown reference"
+        assert f'\n| <a id="{index:04X}"></a>{index:04X}h | ' in types, f"{index:04X}h is not in the Markdown reference"
     return "generated in part" if device is not whole else "generated"
 
 

@@ -31,6 +31,8 @@ def refused(ran_args: list[str], folder: Path, *expected: str) -> None:
         ("--select", "NOPE", "unknown rule code 'NOPE'; a rule code"),
         ("--select", "EDS0300", "unknown rule code 'EDS0300'; did you mean EDS030"),
         ("--ignore", "PDO,XYZ001", "unknown rule code 'XYZ001'"),
+        ("--select", "line-to-long", "unknown rule code 'line-to-long'; did you mean line-too-long"),
+        ("--ignore", "EDS,objlist", "unknown rule code 'objlist'; did you mean objlists"),
     ],
 )
 def test_unknown_rule_codes_on_the_command_line(project: Path, option: str, code: str, expected: str) -> None:
@@ -39,7 +41,7 @@ def test_unknown_rule_codes_on_the_command_line(project: Path, option: str, code
 
 
 def test_codes_and_prefixes_are_accepted(project: Path) -> None:
-    for selection in ("EDS030", "EDS", "PDO0", "eds030"):
+    for selection in ("EDS030", "EDS", "PDO0", "eds030", "line-too-long", "Line-Too-Long", "objlists"):
         ran = run("lint", "--select", selection, "io.eds", cwd=project)
         assert ran.returncode == 0, ran
 
@@ -51,6 +53,7 @@ def test_codes_and_prefixes_are_accepted(project: Path) -> None:
         ('select = ["NOPE1"]', "[tool.cantools-od] select: unknown rule code 'NOPE1'"),
         ('ignore = ["EDS9999"]', "unknown rule code 'EDS9999'"),
         ('per-file-ignores = { "*.eds" = ["COB0O6"] }', "unknown rule code 'COB0O6'; did you mean COB006"),
+        ('ignore = ["line-to-lng"]', "ignore: unknown rule code 'line-to-lng'; did you mean line-too-long"),
     ],
 )
 def test_unknown_names_in_the_configuration(project: Path, table: str, expected: str) -> None:
@@ -95,3 +98,17 @@ def test_convert_never_writes_eds_under_an_xml_name(project: Path) -> None:
         assert_failed_cleanly(ran)
         assert ran.returncode == 2 and "'.xdd'" in ran.stderr, ran
         assert not (project / "io.xdd").exists()
+
+
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        ("line-to-long", "error: no rule line-to-long; did you mean line-too-long"),
+        ("EDS0300", "error: no rule EDS0300; did you mean EDS030"),
+        ("zzzzzzzz", "error: no rule zzzzzzzz; `cantools-od rules` lists them"),
+    ],
+)
+def test_rules_names_the_closest_rule(project: Path, name: str, expected: str) -> None:
+    """Why: `rules line-to-long` said only "no rule"; a misspelt name is met with the closest, in one line."""
+    refused(["rules", name], project, expected)
+    assert len(run("rules", name, cwd=project).stderr.splitlines()) == 1

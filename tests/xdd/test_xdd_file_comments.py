@@ -14,6 +14,7 @@ import canopen
 import pytest
 
 from cantools_od import dumps, load, loads
+from cantools_od.eds.decode import decode_as
 
 from support import CORPUS, cli_command, file_params
 
@@ -249,8 +250,8 @@ def _comments(path: Path, tmp_path: Path) -> str | None:
     data = path.read_bytes()
     try:
         text = data.decode("utf-8")
-    except UnicodeDecodeError:  # what python-canopen reads under a Windows locale
-        text = data.decode("cp1252", "replace")
+    except UnicodeDecodeError:  # what python-canopen reads under the locale of the file's code page (Faulhaber's
+        text = decode_as(data)[0]  # is DOS 850: Schönaich, not Windows-1252's Sch”naich; see test_trust.py)
     lines = text.splitlines(keepends=True)
     start = next(n for n, line in enumerate(lines) if line.strip().lower() == "[comments]")
     end = next((n for n in range(start + 1, len(lines)) if lines[n].lstrip().startswith("[")), len(lines))

@@ -1,8 +1,8 @@
 """One self-contained HTML reference page a device: `<name>.html`, from a DeviceView.
 
 The page needs nothing beyond itself (styles, the filter script and the PDO pictures are inside it), so it
-opens from a file, a build artefact or an e-mail with no network. Anchors are indices only: `#1400` for an
-object, `#1400-1` for its sub-index 1 (both in hex), `#tpdo1` for a PDO's picture; they never depend on names.
+opens from a file, a build artefact or an e-mail with no network. Anchors are those of every reference document
+(render/anchors.py): `#1400` for an object, `#1400-1` for its sub-index 1, and `#tpdo1` for a PDO's picture.
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ from ..views.reference import (
     where_text,
 )
 from . import Each, stream_template, whole
+from .anchors import object_anchor
 from .svg import sheet
 
 
@@ -38,14 +39,6 @@ def stream(view: DeviceView) -> dict[str, Iterable[str]]:
 
 def render(view: DeviceView) -> dict[str, str]:
     return whole(stream(view))
-
-
-def object_anchor(index: int) -> str:
-    return f"{index:04X}"
-
-
-def entry_anchor(index: int, subindex: int) -> str:
-    return f"{index:04X}-{subindex:X}"
 
 
 def _document(view: DeviceView) -> dict[str, object]:
@@ -96,7 +89,7 @@ def _object(view: DeviceView, obj: ObjectView, mapped: dict[tuple[int, int], lis
 def _row(view: DeviceView, entry: EntryView, mapped: dict[tuple[int, int], list[str]]) -> dict[str, object]:
     pdos = mapped.get((entry.index, entry.subindex), [])
     return {
-        "anchor": entry_anchor(entry.index, entry.subindex),
+        "anchor": object_anchor(entry.index, entry.subindex),
         "cells": [
             f"{entry.subindex:X}h",
             entry.name or NONE,

@@ -13,20 +13,27 @@ section is headed with its name (`#rpdo1`, `#tpdo1`). Every link of the document
 from __future__ import annotations
 
 from collections.abc import Iterable
-from pathlib import Path
 
-from ..model import DataType, Device, NodeIdExpr, Object, ObjectKind, RawValue, TimeValue, ValueKind, Variable
-from ..model.datatypes import standard_type
+from ..model import Device, NodeIdExpr, Object
+from ..model.cia301.cobid import VALID
 from ..views.bitfield import diagram
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
+from ..views.reference import (
+    NONE,
+    TYPE_KINDS,
+    limits_text,
+    source_name,
+    summary,
+    type_definition,
+    type_text,
+    value_text,
+    where_text,
+)
 from . import Each, stream_template, whole
 from .anchors import anchor_tag, object_anchor
 from .escape import markdown_cell, markdown_text
 from .prose import count
 from .svg import sheet
-
-NONE = "\u2014"
-VALID_BIT = 0x80000000
 
 
 def stream(view: DeviceView) -> dict[str, Iterable[str]]:
@@ -67,23 +74,12 @@ def link(index: int, anchors: set[int], subindex: int | None = None) -> str:
     return f"[{shown}](#{object_anchor(index, subindex)})" if index in anchors else f"{shown} (absent)"
 
 
-def _source(view: DeviceView) -> str:
-    return view.source_name or f"{view.name}.eds"
-
-
-TYPE_KINDS = (ObjectKind.NULL, ObjectKind.DEFTYPE)
-"""The objects the code views leave out (they define types, hold no data): listed in their own table."""
+_source = source_name
 
 
 def _type_row(view: DeviceView, obj: Object) -> list[str]:
     """Index, name, kind, the type of its value, the value (for a DEFTYPE: the type's size in bits), source."""
-    known = standard_type(obj.data_type)
-    type_name = known.name if known is not None else NONE
-    if known is None and obj.data_type is not None:
-        type_name = f"0x{obj.data_type:04X} (unknown)"
-    value = NONE if obj.default is None else _number(obj.default, known)
-    if obj.kind is ObjectKind.DEFTYPE and isinstance(obj.default, int):
-        value = f"{obj.default} bits"
+    type_name, value = type_definition(obj, markdown_text, markdown_cell)
     where = f"{_source(view)}:{obj.origin.line}" if obj.origin is not None and obj.origin.line else ""
     name = markdown_cell(obj.name) or NONE
     index = anchor_tag(object_anchor(obj.index)) + f"{obj.index:04X}h"
@@ -108,43 +104,7 @@ def _document(view: DeviceView) -> dict[str, object]:
 
 
 def _summary(view: DeviceView) -> list[list[str]]:
-    device = view.device
-    info, file_info = device.device_info, device.file_info
-    nid = view.node_id
-    rates = [f"{rate}" for rate, on in sorted(info.baud_rates.items()) if on]
-    rows = [
-        ("File", markdown_cell(_source(view))),
-        ("FileName", markdown_cell(file_info.file_name or "")),
-        ("Description", markdown_cell(file_info.description or "")),
-        ("Vendor", _named(info.vendor_name, info.vendor_number)),
-        ("Product", _named(info.product_name, info.product_number)),
-        ("Revision number", _hex32(info.revision_number)),
-        ("Order code", markdown_cell(info.order_code or "")),
-        ("File version", _version(file_info.file_version, file_info.file_revision)),
-        ("EDS version", markdown_cell(file_info.eds_version or "")),
-        ("Kind", "DCF" if device.is_dcf else "EDS"),
-        ("Node-ID", str(nid) if nid is not None else "not given: COB-IDs are shown as `$NODEID+offset`"),
-        ("Baud rates", f"{', '.join(rates)} kbit/s" if rates else NONE),
-        ("Objects", str(len(view.objects))),
-    ]
-    return [[name, value] for name, value in rows]
-
-
-def _named(name: str | None, number: int | None) -> str:
-    parts = [markdown_text(name)] if name else []
-    if number is not None:
-        parts.append(f"({_hex32(number)})" if parts else _hex32(number))
-    return " ".join(parts) or NONE
-
-
-def _hex32(number: int | None) -> str:
-    return NONE if number is None else f"0x{number:08X}"
-
-
-def _version(version: int | None, revision: int | None) -> str:
-    if version is None and revision is None:
-        return NONE
-    return f"{version if version is not None else '?'}.{revision if revision is not None else '?'}"
+    return [[name, value] for name, value in summary(view, markdown_cell, markdown_text, lambda text: f"`{text}`")]
 
 
 # --- PDOs ---------------------------------------------------------------------------------------------------
@@ -156,7 +116,7 @@ def _cob_id(pdo: PdoView) -> str:
         return NONE
     value = cob.offset if isinstance(cob, NodeIdExpr) else cob
     text = f"`{cob.canonical()}`" if isinstance(cob, NodeIdExpr) else f"`0x{cob:X}`"
-    return text + (" (not valid)" if value & VALID_BIT else "")
+    return text + (" (not valid)" if value & VALID else "")
 
 
 def _pdo_row(pdo: PdoView, anchors: set[int]) -> list[str]:
@@ -228,17 +188,8 @@ def _mapped(view: DeviceView) -> dict[tuple[int, int], list[str]]:
 # --- objects ------------------------------------------------------------------------------------------------
 
 
-def _variable(device: Device, entry: EntryView) -> tuple[Object, Variable]:
-    obj = device.objects[entry.index]
-    var = obj.entry(entry.subindex)
-    return obj, var if var is not None else obj
-
-
 def _type(device: Device, entry: EntryView) -> str:
-    if entry.data_type is not None:
-        return entry.data_type.name
-    _, var = _variable(device, entry)
-    return f"0x{var.data_type:04X} (unknown)" if var.data_type is not None else NONE
+    return type_text(device, entry)
 
 
 def _pdo_cell(entry: EntryView, mapped: dict[tuple[int, int], list[str]]) -> str:
@@ -249,57 +200,15 @@ def _pdo_cell(entry: EntryView, mapped: dict[tuple[int, int], list[str]]) -> str
 
 
 def _value(view: DeviceView, entry: EntryView) -> str:
-    _, var = _variable(view.device, entry)
-    value = var.parameter_value if var.parameter_value is not None else var.default
-    if value is None:
-        return NONE
-    if isinstance(value, RawValue):
-        return markdown_text(value.text) + " (unreadable)"
-    if isinstance(value, TimeValue):
-        return f"{value.days} days {value.ms} ms"
-    if isinstance(value, NodeIdExpr):
-        nid = view.node_id
-        text = markdown_text(value.canonical())
-        return text if nid is None else f"0x{value.resolve(nid):X} ({text})"
-    return _number(value, entry.data_type)
-
-
-def _number(value: object, dtype: DataType | None) -> str:
-    if dtype is not None and dtype.kind is ValueKind.BOOL and value in (0, 1):
-        return "true" if value else "false"
-    if isinstance(value, bool):
-        return str(int(value))
-    if isinstance(value, int):
-        unsigned = dtype is not None and dtype.kind is ValueKind.UNSIGNED and (dtype.bits or 0) >= 32
-        return f"0x{value:0{(dtype.bits or 32) // 4 if dtype else 8}X}" if unsigned and value > 9 else str(value)
-    if isinstance(value, float):
-        return markdown_text(repr(value))
-    if isinstance(value, bytes):
-        return " ".join(f"{byte:02X}" for byte in value) or '""'
-    if isinstance(value, str):
-        return f'"{markdown_text(value)}"'
-    return markdown_cell(str(value))
+    return value_text(view, entry, markdown_text, markdown_cell)
 
 
 def _limits(entry: EntryView) -> str:
-    low, high = entry.low_limit, entry.high_limit
-    if low is None and high is None:
-        return NONE
-    if low is None:
-        return f"max {markdown_text(str(high))}"
-    if high is None:
-        return f"min {markdown_text(str(low))}"
-    return f"{markdown_text(str(low))}..{markdown_text(str(high))}"
+    return limits_text(entry, markdown_text)
 
 
 def _where(view: DeviceView, entry: EntryView) -> str:
-    obj, var = _variable(view.device, entry)
-    origin = var.origin or obj.origin
-    if origin is None or not origin.line:
-        return NONE
-    # The origin names its own file: a model imported from a manual points into the manual.
-    file = Path(origin.file).name if origin.file else _source(view)
-    return markdown_text(f"{file}:{origin.line}") + (" (compact)" if entry.implicit else "")
+    return where_text(view, entry, markdown_text) or NONE
 
 
 def _object_row(

@@ -38,7 +38,7 @@ def command(
     """Serve the node FILE (EDS, DCF, XDD, XDC or JSON) describes on a CAN bus: boot-up, NMT, heartbeat (1017h),
     SDO server with CiA 301 abort codes, PDOs, EMCY from a script. Values are ParameterValue (a DCF), else
     DefaultValue. Runs until Ctrl-C (exit 0); exit 2 when the bus cannot be used."""
-    from ..live.simulator import Simulator
+    from ..live.simulator import CannotServe, Simulator
 
     device = read_device(file, node_id)
     nid = node_id if node_id is not None else device.node_id
@@ -47,7 +47,11 @@ def command(
         sys.exit(EXIT_USAGE)
     setup = _script_setup(script) if script else None
     with terminate_as_interrupt(), connected(bus, "simulate") as network:
-        simulator = Simulator(device, nid, network)
+        try:
+            simulator = Simulator(device, nid, network)
+        except CannotServe as error:
+            click.echo(f"{file}: error: {error}", err=True)
+            sys.exit(EXIT_USAGE)
         objects, entries = simulator.served()
         click.echo(
             f"simulate: node {nid} from {file} ({objects} objects, {entries} entries) on {bus.describe()}; "

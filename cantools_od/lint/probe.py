@@ -10,11 +10,12 @@ time do not hear each other.
 from __future__ import annotations
 
 from ..model import Severity
+from ..model.datatypes import STANDARD_TYPES
 from . import examples as ex
 from .rules import declare
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
-U16, U32 = 0x0006, 0x0007
+U16, U32 = (STANDARD_TYPES[n].index for n in (6, 7))  # the data types of the examples' entries
 SPEED = ex.var(0x2000, "Speed", U32, "rw", 5, 0)
 _PROBE = "`probe` reads every entry of the description over SDO (docs/probe.md)."
 
@@ -85,12 +86,13 @@ _declare(
     "Device type or identity differs from the description",
     """
 Device type (1000h) or identity (1018h sub-indices 1-3, and the serial number when a DCF gives it) as read
-differs from the description's value, or from the number [DeviceInfo] gives. A master's boot-up check compares
-exactly these (CiA 302-2, 1F84h-1F88h, which lely and ros2_canopen fill in from the description), and refuses
-to start the node when they differ.""",
+differs from what the description gives a master to compare: [DeviceInfo]'s VendorNumber, ProductNumber or
+RevisionNumber when not 0, else the entry's value. A master's boot-up check compares exactly these (CiA 302-2,
+1F84h-1F88h, which lely's dcfgen and ros2_canopen fill in from the description; 0 is not checked), and
+refuses to start the node when they differ.""",
     43204,
+    ex.var(0x1000, "Device type", U32, "ro", "0x00040192", 0) + SPEED,
     ex.var(0x1000, "Device type", U32, "ro", "0x00020192", 0) + SPEED,
-    SPEED,
     "describe the device as it is (its 1000h/1018h and [DeviceInfo]), or probe the device the description is for.",
 )
 _declare(

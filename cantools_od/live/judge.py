@@ -8,17 +8,13 @@ from typing import TYPE_CHECKING, Any
 from ..lint.codes import load
 from ..lint.rules import Context, Finding
 from ..model import AccessType, Object, Variable
-from ..model.cia301 import aborts
+from ..model.cia301 import aborts, bootcheck
 from ..model.cia301.objects import (
     COMMUNICATION_AREA,
-    DEVICE_TYPE,
     ERROR_HISTORY,
     ERROR_REGISTER,
     IDENTITY,
-    IDENTITY_PRODUCT_CODE,
-    IDENTITY_REVISION,
     IDENTITY_SERIAL,
-    IDENTITY_VENDOR_ID,
     MANUFACTURER_STATUS,
 )
 
@@ -27,14 +23,6 @@ if TYPE_CHECKING:
 
     from .probe import Reading
 
-# What the master's boot-up check compares (CiA 302-2: 1F84h-1F88h), entry by entry.
-BOOT_CHECK = {
-    (DEVICE_TYPE, 0): "1F84h",
-    (IDENTITY, IDENTITY_VENDOR_ID): "1F85h",
-    (IDENTITY, IDENTITY_PRODUCT_CODE): "1F86h",
-    (IDENTITY, IDENTITY_REVISION): "1F87h",
-    (IDENTITY, IDENTITY_SERIAL): "1F88h",
-}
 # Values the device changes by itself: its error state, not a configuration.
 STATUS = {ERROR_REGISTER, MANUFACTURER_STATUS, ERROR_HISTORY}
 
@@ -52,7 +40,7 @@ class Judge:
         if od.fixed_size and len(data) != len(od) // 8:
             return [self._report("PRB002", owner, sub, var, f"the device answers {_bytes(len(data))}, "
                                  f"the data type has {_bytes(len(od) // 8)}")]  # fmt: skip
-        if (owner.index, sub) in BOOT_CHECK:
+        if (owner.index, sub) in bootcheck.CHECKED_BY:
             return self._identity(owner, sub, var, od, data)
         return self._value(owner, sub, var, od, data)
 
@@ -79,27 +67,31 @@ class Judge:
                              f"to read it ({_abort(abort)})")]  # fmt: skip
 
     def _identity(self, owner: Object, sub: int, var: Variable, od: Any, data: bytes) -> list[Finding]:
-        """Device type and identity against the file: the object's value, and [DeviceInfo]'s number."""
-        actual = od.decode_raw(data)
-        expected = {"the file": _expected(od)} if sub != IDENTITY_SERIAL or var.parameter_value is not None else {}
-        number = _device_info_number(self.ctx, owner.index, sub)
-        if number is not None:
-            expected["[DeviceInfo]"] = number
-        wrong = [f"{where} {_hex(value)}" for where, value in expected.items() if value is not None and value != actual]
-        if not wrong:
+        """Device type and identity against what the master's boot-up check compares (0: not checked); the
+        serial number only when a DCF gives it (an EDS describes every device of its kind)."""
+        device = self.ctx.device
+        if sub == IDENTITY_SERIAL and owner.index == IDENTITY and var.parameter_value is None:
             return []
-        message = (f"the device says {_hex(actual)}, {' and '.join(wrong)}; the master's boot-up check "
-                   f"({BOOT_CHECK[owner.index, sub]}) compares it")  # fmt: skip
-        return [self._report("PRB004", owner, sub, var, message, key="DefaultValue")]
+        wanted = bootcheck.expected(device, owner.index, sub, self.ctx.options.node_id)
+        if not wanted or not _fits(od, wanted):  # a value outside the type: lint reports the file (EDS034)
+            return []
+        actual = od.decode_raw(data)
+        if actual == wanted:
+            return []
+        key = "ParameterValue" if var.parameter_value is not None else "DefaultValue"
+        source = "[DeviceInfo]" if bootcheck.device_info_number(device, owner.index, sub) else f"the file's {key}"
+        checked_by = bootcheck.CHECKED_BY[owner.index, sub]
+        message = (f"the device says {_hex(actual)}, {source} {_hex(wanted)}; the master's boot-up check "
+                   f"({checked_by:04X}h) compares it")  # fmt: skip
+        return [self._report("PRB004", owner, sub, var, message, key=key)]
 
     def _value(self, owner: Object, sub: int, var: Variable, od: Any, data: bytes) -> list[Finding]:
         expected = _expected(od)
         if expected is None or self._changes_by_itself(owner, var):
             return []
-        try:
-            wanted = od.encode_raw(expected)
-        except (ValueError, TypeError, UnicodeError, OverflowError):
+        if not _fits(od, expected):
             return []
+        wanted = od.encode_raw(expected)
         if _same(od, wanted, data):
             return []
         key = "ParameterValue" if var.parameter_value is not None else "DefaultValue"
@@ -126,15 +118,12 @@ def _expected(od: Any) -> Any:
     return od.value if od.value is not None else od.default
 
 
-def _device_info_number(ctx: Context, index: int, sub: int) -> int | None:
-    info = ctx.device.device_info
-    if index != IDENTITY:
-        return None
-    return {
-        IDENTITY_VENDOR_ID: info.vendor_number,
-        IDENTITY_PRODUCT_CODE: info.product_number,
-        IDENTITY_REVISION: info.revision_number,
-    }.get(sub)
+def _fits(od: Any, value: Any) -> bool:
+    try:
+        od.encode_raw(value)
+    except (ValueError, TypeError, UnicodeError, OverflowError):
+        return False
+    return True
 
 
 def _same(od: Any, wanted: bytes, data: bytes) -> bool:

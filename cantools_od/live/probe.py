@@ -199,7 +199,7 @@ class Prober:
         if self.current is None:
             return
         index, sub = self.current
-        abort = struct.pack("<BHBI", 0x80, index, sub, aborts.GENERAL_ERROR)
+        abort = struct.pack("<BHBI", aborts.ABORT_TRANSFER, index, sub, aborts.GENERAL_ERROR)
         with contextlib.suppress(Exception):  # the bus is gone: the server's own timeout ends the transfer
             self.node.network.send_message(self.node.sdo.rx_cobid, abort)
 

@@ -19,7 +19,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from ..interop import to_canopen
-from ..model.cia301 import aborts
+from ..model.cia301 import aborts, bootcheck, nmt
 from ..model.cia301.objects import COB_ID_SYNC, COMMUNICATION_AREA, PDO_AREA, PRODUCER_HEARTBEAT
 from .pdo import PdoRunner
 
@@ -28,9 +28,11 @@ if TYPE_CHECKING:
 
     from ..model import Device
 
-NMT_START, NMT_STOP, NMT_PRE_OPERATIONAL, NMT_RESET_NODE, NMT_RESET_COMMUNICATION = 0x01, 0x02, 0x80, 0x81, 0x82
-OPERATIONAL, PRE_OPERATIONAL = 5, 127
 Key = tuple[int, int]
+
+
+class CannotServe(Exception):
+    """python-canopen cannot make a node of the description; the message says why, in one line."""
 
 
 class Simulator:
@@ -43,8 +45,11 @@ class Simulator:
         self.node_id = node_id
         self.network = network
         self.od = to_canopen(device, node_id)
-        self.node: Any = canopen.LocalNode(node_id, self.od)  # partly annotated: used as untyped
-        self.initial = _initial_values(self.od)
+        try:
+            self.node: Any = canopen.LocalNode(node_id, self.od)  # partly annotated: used as untyped
+        except (KeyError, ValueError, TypeError) as error:  # its PDO set-up wants each PDO's both records
+            raise CannotServe(f"python-canopen cannot build a node from it: {' '.join(str(error).split())}") from error
+        self.initial = _initial_values(self.od) | _boot_check_values(device, self.od)
         self.node.data_store = _store(self.initial)
         self.node._write_callbacks.insert(0, self._check_limits)  # before the NMT slave starts a heartbeat
         self.node._write_callbacks.append(self._written)
@@ -61,8 +66,8 @@ class Simulator:
 
     def start(self) -> None:
         """Boot: the boot-up message, then PRE-OPERATIONAL with the heartbeat of 1017h."""
-        self.node.nmt.send_command(NMT_RESET_NODE)  # INITIALISING: sends the boot-up message
-        self.node.nmt._state = PRE_OPERATIONAL
+        self.node.nmt.send_command(nmt.RESET_NODE)  # INITIALISING: sends the boot-up message
+        self.node.nmt._state = nmt.PRE_OPERATIONAL
         self.node.nmt.start_heartbeat(self._heartbeat_ms())
 
     def stop(self) -> None:
@@ -78,13 +83,13 @@ class Simulator:
 
     def _nmt_command(self, can_id: int, data: bytearray, timestamp: float) -> None:
         """After python-canopen's NMT slave took the new state: what the state change does to the node."""
-        if len(data) < 2 or data[1] not in (0, self.node_id):
+        if len(data) < 2 or data[1] not in (nmt.ALL_NODES, self.node_id):
             return
         command = data[0]
         with self.lock:
-            if command in (NMT_RESET_NODE, NMT_RESET_COMMUNICATION):
-                self._reset(communication_only=command == NMT_RESET_COMMUNICATION)
-            self.pdo.follow(self.node.nmt._state == OPERATIONAL)
+            if command in nmt.RESETS:
+                self._reset(communication_only=command == nmt.RESET_COMMUNICATION)
+            self.pdo.follow(self.node.nmt._state == nmt.OPERATIONAL)
 
     def _reset(self, communication_only: bool) -> None:
         for (index, sub), data in self.initial.items():
@@ -119,7 +124,7 @@ class Simulator:
         with self.lock:
             self.node.data_store.setdefault(index, {})[subindex] = bytes(data)
             if index in PDO_AREA or index == COB_ID_SYNC:
-                self.pdo.follow(self.node.nmt._state == OPERATIONAL)
+                self.pdo.follow(self.node.nmt._state == nmt.OPERATIONAL)
             else:
                 self.pdo.changed(index, subindex)
 
@@ -189,8 +194,20 @@ def _initial_values(od: canopen.ObjectDictionary) -> dict[Key, bytes]:
     return values
 
 
-def _encoded(var: Any) -> bytes:
-    for value in (var.value, var.default):
+def _boot_check_values(device: Device, od: canopen.ObjectDictionary) -> dict[Key, bytes]:
+    """The identity [DeviceInfo] gives, where it gives one: what a master's boot-up check expects of the
+    node (lely's dcfgen takes it over the 1018h values, which many descriptions leave 0)."""
+    values: dict[Key, bytes] = {}
+    for index, sub in bootcheck.CHECKED_BY:
+        variable = od.get_variable(index, sub)
+        number = bootcheck.device_info_number(device, index, sub)
+        if variable is not None and number:
+            values[index, sub] = _encoded(variable, number)
+    return values
+
+
+def _encoded(var: Any, *first: Any) -> bytes:
+    for value in (*first, var.value, var.default):
         if value is None:
             continue
         try:

@@ -5,6 +5,8 @@ Both ends of a live bus use this table: `simulate` answers with these codes, `pr
 
 from __future__ import annotations
 
+ABORT_TRANSFER = 0x80  # the command byte of an abort frame (ccs/scs 4)
+
 TIMEOUT = 0x05040000
 UNSUPPORTED_ACCESS = 0x06010000
 WRITE_ONLY = 0x06010001  # a read of a write-only object

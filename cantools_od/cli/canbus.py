@@ -19,6 +19,7 @@ if TYPE_CHECKING:
 
     from ..live.bus import BusOptions
 
+RECEIVE_CYCLE = 0.1  # seconds the receiving thread waits per turn: how long stopping it takes at most
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a command Ctrl-C stopped
 
 
@@ -56,6 +57,7 @@ def connected(options: BusOptions, command: str) -> Iterator[canopen.Network]:
         click.echo(f"{command}: error: {error}", err=True)
         sys.exit(EXIT_USAGE)
     network = canopen.Network(bus)
+    network.NOTIFIER_CYCLE = RECEIVE_CYCLE
     try:
         network.connect()
         yield network

@@ -57,9 +57,12 @@ def command(
         click.echo(f"{file}: error: no node-ID: give --node-id", err=True)
         sys.exit(EXIT_USAGE)
     options = ProbeOptions(timeout=timeout, wait=wait, check_writes=check_writes)
-    with terminate_as_interrupt(), connected(bus, "probe") as network:
-        prober = Prober(device, nid, network, options)
-        result = _run(prober)
+    try:
+        with terminate_as_interrupt(), connected(bus, "probe") as network:
+            result = _run(Prober(device, nid, network, options))
+    except KeyboardInterrupt:  # before the first read, or while the bus closed: nothing was read or changed
+        click.echo("probe: interrupted; nothing was changed", err=True)
+        sys.exit(EXIT_INTERRUPTED)
     findings = result.findings
     from ..lint.output import render
 

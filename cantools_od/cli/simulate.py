@@ -46,32 +46,32 @@ def command(
         click.echo(f"{file}: error: no node-ID: give --node-id", err=True)
         sys.exit(EXIT_USAGE)
     setup = _script_setup(script) if script else None
-    with terminate_as_interrupt(), connected(bus, "simulate") as network:
-        try:
-            simulator = Simulator(device, nid, network)
-        except CannotServe as error:
-            click.echo(f"{file}: error: {error}", err=True)
-            sys.exit(EXIT_USAGE)
-        objects, entries = simulator.served()
-        click.echo(
-            f"simulate: node {nid} from {file} ({objects} objects, {entries} entries) on {bus.describe()}; "
-            "Ctrl-C stops",
-            err=True,
-        )
-        status = _serve(simulator, setup, duration)
-        simulator.stop()
+    try:
+        with terminate_as_interrupt(), connected(bus, "simulate") as network:
+            try:
+                simulator = Simulator(device, nid, network)
+            except CannotServe as error:
+                click.echo(f"{file}: error: {error}", err=True)
+                sys.exit(EXIT_USAGE)
+            objects, entries = simulator.served()
+            serving = f"node {nid} from {file} ({objects} objects, {entries} entries) on {bus.describe()}"
+            status = _serve(simulator, setup, duration, serving)
+    except KeyboardInterrupt:  # before the node ran, or while the bus closed: nothing more to stop
+        status = EXIT_OK
     if status == EXIT_OK:
         click.echo("simulate: stopped", err=True)
     sys.exit(status)
 
 
-def _serve(simulator: Simulator, setup: Any, duration: float | None) -> int:
-    """Boot the node and serve until Ctrl-C, the duration, or a failure of the bus (exit 2)."""
+def _serve(simulator: Simulator, setup: Any, duration: float | None, serving: str) -> int:
+    """Boot the node, say what it serves, and serve until Ctrl-C, the duration, or a failure of the bus or the
+    script (exit 2)."""
     stopped = threading.Event()
     try:
         simulator.start()
         if setup is not None:
             setup(simulator)
+        click.echo(f"simulate: {serving}; Ctrl-C stops", err=True)
         waited = 0.0
         while duration is None or waited < duration:
             step = POLL if duration is None else min(POLL, duration - waited)
@@ -83,6 +83,8 @@ def _serve(simulator: Simulator, setup: Any, duration: float | None) -> int:
     except Exception as error:  # the bus or the script failed: one line, never a traceback
         click.echo(f"simulate: error: {_reason(error)}", err=True)
         return EXIT_USAGE
+    finally:
+        simulator.stop()
     return EXIT_OK
 
 

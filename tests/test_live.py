@@ -1,0 +1,222 @@
+"""`simulate` and `probe` on python-can's `virtual` bus, inside this process: python-canopen as the master
+of a simulated node (SDO with CiA 301 abort codes, boot-up, heartbeat, NMT, PDOs on SYNC, RPDOs, EMCY), and
+`probe` of a simulation (nothing to report) and of descriptions that differ from it (exactly their finding).
+tests/test_live_cli.py runs the installed commands between processes."""
+
+from __future__ import annotations
+
+import itertools
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+
+import can
+import canopen
+import pytest
+from livekit import received_on_sync
+
+from cantools_od.api import load, loads
+from cantools_od.lint import examples as ex
+from cantools_od.live.probe import NoAnswer, ProbeOptions, Prober, ProbeResult
+from cantools_od.live.simulator import CannotServe, Simulator
+from cantools_od.model import Device
+
+from support import EXAMPLES, corpus_params
+
+DRIVE = EXAMPLES / "cia402_drive.eds"
+NODE = 5
+CHANNELS = itertools.count()
+
+
+def _network(channel: str) -> canopen.Network:
+    network = canopen.Network(can.Bus(interface="virtual", channel=channel))
+    network.NOTIFIER_CYCLE = 0.05
+    return network
+
+
+@contextmanager
+def served(device: Device, start: bool = True) -> Iterator[tuple[Simulator, canopen.Network]]:
+    """The simulated node of `device`, and a master's network on the same virtual bus."""
+    channel = f"live-{next(CHANNELS)}"
+    node_side, master = _network(channel), _network(channel)
+    simulator = Simulator(device, NODE, node_side)
+    node_side.connect()
+    master.connect()
+    try:
+        if start:
+            simulator.start()
+        yield simulator, master
+    finally:
+        simulator.stop()
+        master.disconnect()
+        node_side.disconnect()
+
+
+def probed(served_device: Device, described: Device, check_writes: bool = False) -> ProbeResult:
+    with served(served_device) as (_, master):
+        return Prober(described, NODE, master, ProbeOptions(timeout=0.5, check_writes=check_writes)).run()
+
+
+def _abort(call: object) -> int:
+    with pytest.raises(canopen.SdoAbortedError) as aborted:
+        call()  # type: ignore[operator]
+    return int(aborted.value.code)
+
+
+LIMITED = ex.frame(
+    ex.section(
+        "2000", ParameterName="Speed", ObjectType="0x7", DataType="0x0006", AccessType="rw",
+        DefaultValue=5, LowLimit=1, HighLimit=100, PDOMapping=0,
+    )
+)  # fmt: skip
+
+
+def test_sdo_answers_by_access_type_and_limits_with_cia_301_abort_codes() -> None:
+    device = loads(LIMITED, source="limited.eds")
+    with served(device) as (_, master):
+        node = master.add_node(NODE, canopen.ObjectDictionary())
+        sdo = node.sdo
+        assert sdo.upload(0x2000, 0) == (5).to_bytes(2, "little")
+        assert sdo.upload(0x1018, 1) == (1).to_bytes(4, "little")  # the frame's VendorNumber
+        assert _abort(lambda: sdo.upload(0x2001, 0)) == 0x06020000
+        assert _abort(lambda: sdo.upload(0x1018, 9)) == 0x06090011
+        assert _abort(lambda: sdo.download(0x1000, 0, bytes(4))) == 0x06010002
+        assert _abort(lambda: sdo.download(0x2000, 0, bytes(4))) == 0x06070010
+        assert _abort(lambda: sdo.download(0x2000, 0, (101).to_bytes(2, "little"))) == 0x06090031
+        assert _abort(lambda: sdo.download(0x2000, 0, (0).to_bytes(2, "little"))) == 0x06090032
+        sdo.download(0x2000, 0, (42).to_bytes(2, "little"))
+        assert sdo.upload(0x2000, 0) == (42).to_bytes(2, "little")
+
+
+def test_boot_up_heartbeat_and_reset_as_a_master_sees_them() -> None:
+    device = load(DRIVE)
+    with served(device, start=False) as (simulator, master):
+        node = master.add_node(NODE, canopen.ObjectDictionary())
+        booted = _boot_up_seen(master)
+        simulator.start()
+        assert booted.wait(2)
+        node.sdo.download(0x1017, 0, (50).to_bytes(2, "little"))
+        assert node.nmt.wait_for_heartbeat(1) == "PRE-OPERATIONAL"
+        node.nmt.state = "OPERATIONAL"
+        time.sleep(0.15)
+        assert node.nmt.wait_for_heartbeat(1) == "OPERATIONAL"
+        booted.clear()
+        node.nmt.state = "RESET"
+        assert booted.wait(2)
+        default = device.objects[0x1017].default
+        assert int.from_bytes(node.sdo.upload(0x1017, 0), "little") == default  # the reset restored it
+
+
+def _boot_up_seen(master: canopen.Network) -> object:
+    import threading
+
+    seen = threading.Event()
+    master.subscribe(0x700 + NODE, lambda can_id, data, ts: seen.set() if bytes(data) == b"\0" else None)
+    return seen
+
+
+def test_tpdo_on_sync_rpdo_into_the_dictionary_and_emcy() -> None:
+    with served(load(DRIVE)) as (simulator, master):
+        node = master.add_node(NODE, str(DRIVE))
+        node.tpdo.read(from_od=True)
+        node.rpdo.read(from_od=True)
+        node.nmt.state = "OPERATIONAL"
+        time.sleep(0.1)
+        simulator.set(0x6041, 0, 0x0237)
+        simulator.set(0x6064, 0, -1234)
+        synchronous = next(p for p in node.tpdo.map.values() if p.enabled and p.trans_type == 1)
+        assert received_on_sync(master, synchronous)
+        assert synchronous["Statusword"].raw == 0x0237
+        assert synchronous["Position actual value"].raw == -1234
+        event = next(p for p in node.rpdo.map.values() if p.enabled and p.trans_type >= 254)
+        event["Controlword"].raw = 0x000F
+        event.transmit()
+        time.sleep(0.2)
+        assert simulator.get(0x6040) == 0x000F
+        simulator.emcy(0x8130, 0x11)
+        assert node.emcy.wait(0x8130, 1) is not None
+
+
+def test_probe_of_its_own_simulation_reads_every_entry_and_finds_nothing() -> None:
+    device = load(DRIVE)
+    result = probed(device, device, check_writes=True)
+    assert result.findings == []
+    entries = sum(len(obj.subs) or 1 for obj in device.objects.values())
+    assert result.read == entries
+    assert result.transfers > entries  # the writes back
+
+
+def _mutated(old: str, new: str) -> Device:
+    text = DRIVE.read_text(encoding="utf-8")
+    assert old in text
+    return loads(text.replace(old, new, 1), source="mutated.eds")
+
+
+SPEED = ex.var(0x2100, "Extra", 0x0006, "rw", 0, 0)
+
+
+@pytest.mark.parametrize(
+    ("served_old", "served_new", "described_old", "described_new", "code"),
+    [
+        pytest.param("", "", "[1000]", SPEED + "\n[1000]", "PRB001", id="missing object"),
+        pytest.param(
+            "", "", "[1018sub3]", "[1018sub5]\nParameterName=Extra\nDataType=0x0007\nAccessType=ro\n\n[1018sub3]",
+            "PRB001", id="missing sub-index",
+        ),
+        pytest.param(
+            "", "", "ParameterName=Modes of operation\nObjectType=0x7\nDataType=0x0002",
+            "ParameterName=Modes of operation\nObjectType=0x7\nDataType=0x0003", "PRB002", id="wrong type size",
+        ),
+        pytest.param("ParameterName=Controlword\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n",
+                     "ParameterName=Controlword\nObjectType=0x7\nDataType=0x0006\nAccessType=wo\n", "", "",
+                     "PRB003", id="read refused"),
+        pytest.param("", "", "VendorNumber=0x00000CA7", "VendorNumber=0x00000CA8", "PRB004", id="wrong identity"),
+        pytest.param("", "", "[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
+                     "AccessType=rw\nDefaultValue=", "[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\n"
+                     "DataType=0x0006\nAccessType=rw\nDefaultValue=1", "PRB006", id="communication value"),
+    ],
+)  # fmt: skip
+def test_each_difference_gives_exactly_its_finding(
+    served_old: str, served_new: str, described_old: str, described_new: str, code: str
+) -> None:
+    device = _mutated(served_old, served_new) if served_old else load(DRIVE)
+    described = _mutated(described_old, described_new) if described_old else load(DRIVE)
+    result = probed(device, described)
+    assert [finding.code for finding in result.findings] == [code], [f.format() for f in result.findings]
+    assert result.findings[0].location.file == described.source and result.findings[0].location.line > 0
+
+
+def test_wrong_access_found_by_writing_back() -> None:
+    device = _mutated("ParameterName=Controlword\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n",
+                      "ParameterName=Controlword\nObjectType=0x7\nDataType=0x0006\nAccessType=ro\n")  # fmt: skip
+    described = load(DRIVE)
+    assert probed(device, described).findings == []  # reading alone cannot tell
+    written = probed(device, described, check_writes=True).findings
+    assert [f.code for f in written] == ["PRB007"]
+    assert "0601 0002h" in written[0].message
+
+
+def test_a_node_that_does_not_answer_is_no_probe() -> None:
+    device = load(DRIVE)
+    network = _network(f"live-{next(CHANNELS)}")
+    network.connect()
+    try:
+        started = time.monotonic()
+        with pytest.raises(NoAnswer, match="node 5 does not answer"):
+            Prober(device, NODE, network, ProbeOptions(timeout=0.2)).run()
+        assert time.monotonic() - started < 2
+    finally:
+        network.disconnect()
+
+
+@pytest.mark.parametrize("path", corpus_params())
+def test_probe_of_a_corpus_simulation_finds_nothing(path: Path) -> None:
+    """Every corpus device python-canopen can serve (about 0.4 s each: all 97 in 40 s on one core)."""
+    device = load(path, node_id=NODE)
+    try:
+        result = probed(device, device)
+    except CannotServe as refused:
+        pytest.skip(str(refused))  # eds-dcf-net's full_features.dcf: an RPDO without its mapping record
+    assert result.findings == [], [f.format() for f in result.findings[:3]]
+    assert result.read > 0

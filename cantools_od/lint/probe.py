@@ -128,7 +128,8 @@ _declare(
     """
 With `--check-writes`, `probe` writes each writable entry back with the value it just read (so the device keeps
 its values): the device aborts the write (0601 0002h: read only, or another code). Store and restore commands
-(1010h/1011h), program control (1F51h) and PDO mappings are not written, as writing them has effects.""",
+(1010h/1011h), program control (1F51h), PDO mappings, and a PDO's inhibit time and SYNC start value (which
+CiA 301 lets change only while the PDO is disabled) are not written.""",
     43207,
     SPEED.replace("AccessType=rw", "AccessType=ro"),
     SPEED,

@@ -52,6 +52,8 @@ class Judge:
                              f"the value it just gave ({_abort(abort)})")]  # fmt: skip
 
     def _aborted(self, owner: Object, sub: int, var: Variable, abort: int) -> list[Finding]:
+        if abort == aborts.NO_DATA:  # an empty value, or an error history entry not filled (CiA 301 1003h)
+            return []
         if abort == aborts.NO_OBJECT:
             where = self.ctx.at(owner)
             message = f"[{owner.index:04X}] {owner.name}: the device has no such object ({_abort(abort)})"

@@ -19,7 +19,16 @@ from ..interop import to_canopen
 from ..lint.rules import Context, Finding, LintOptions
 from ..model import AccessType, Object, ObjectKind, Variable
 from ..model.cia301 import aborts
-from ..model.cia301.objects import DEVICE_TYPE, MAP_BASE, PDO_SPAN, RESTORE_DEFAULTS, RX, STORE_PARAMETERS, TX
+from ..model.cia301.objects import (
+    COMM_BASE,
+    DEVICE_TYPE,
+    MAP_BASE,
+    PDO_SPAN,
+    RESTORE_DEFAULTS,
+    RX,
+    STORE_PARAMETERS,
+    TX,
+)
 from ..model.datatypes import DOMAIN
 from .judge import Judge
 
@@ -29,12 +38,17 @@ if TYPE_CHECKING:
     from ..model import Device
 
 PROGRAM_CONTROL = 0x1F51  # CiA 302-3: writing it starts or stops the application
-# Writing back the value read has an effect here: a store or restore command, a program command, a mapping
-# that the device accepts only while its PDO is disabled.
+# Writing back the value read has an effect here, or a device refuses it by the standard: a store or restore
+# command, a program command, a mapping, and the inhibit time and SYNC start value (sub-indices 3 and 6 of a
+# PDO's communication record), which CiA 301 lets change only while the PDO is disabled.
+PDO_FIXED_WHILE_VALID = (3, 6)
 NO_WRITE_BACK = (
     {STORE_PARAMETERS, RESTORE_DEFAULTS, PROGRAM_CONTROL}
     | set(range(MAP_BASE[RX], MAP_BASE[RX] + PDO_SPAN))
     | set(range(MAP_BASE[TX], MAP_BASE[TX] + PDO_SPAN))
+)
+PDO_COMMUNICATION = set(range(COMM_BASE[RX], COMM_BASE[RX] + PDO_SPAN)) | set(
+    range(COMM_BASE[TX], COMM_BASE[TX] + PDO_SPAN)
 )
 
 
@@ -126,7 +140,7 @@ class Prober:
             if reading.abort == aborts.NO_OBJECT:
                 missing.add(owner.index)
             self.result.findings += self.judge.reading(owner, sub, var, reading)
-            if self.options.check_writes and reading.data is not None and self._writes_back(owner, var):
+            if self.options.check_writes and reading.data is not None and self._writes_back(owner, sub, var):
                 self.result.findings += self.judge.written(owner, sub, var, self._write(owner.index, sub, reading))
         self.result.seconds = time.monotonic() - started
         return self.result
@@ -158,8 +172,6 @@ class Prober:
         try:
             return Reading(index, sub, data=self._uploaded(index, sub))
         except SdoAbortedError as error:
-            if error.code == aborts.NO_DATA:  # nothing to give: an empty string or domain
-                return Reading(index, sub, data=b"")
             return Reading(index, sub, abort=error.code)
         except SdoCommunicationError:
             return Reading(index, sub, abort=aborts.TIMEOUT)
@@ -175,8 +187,10 @@ class Prober:
             return data[: len(variable) // 8]  # an expedited answer that does not say its length
         return data
 
-    def _writes_back(self, owner: Object, var: Variable) -> bool:
-        return var.access is not None and var.access.writable and owner.index not in NO_WRITE_BACK
+    def _writes_back(self, owner: Object, sub: int, var: Variable) -> bool:
+        if var.access is None or not var.access.writable or owner.index in NO_WRITE_BACK:
+            return False
+        return not (owner.index in PDO_COMMUNICATION and sub in PDO_FIXED_WHILE_VALID)
 
     def _write(self, index: int, sub: int, reading: Reading) -> int | None:
         """Download the bytes just read; the abort code when the device refuses (TIMEOUT: no answer)."""

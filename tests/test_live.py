@@ -187,6 +187,25 @@ def test_each_difference_gives_exactly_its_finding(
     assert result.findings[0].location.file == described.source and result.findings[0].location.line > 0
 
 
+def test_a_manufacturer_value_that_differs_is_information() -> None:
+    described = _mutated("ParameterName=Modes of operation\nObjectType=0x7\nDataType=0x0002\nAccessType=rw\n"
+                         "DefaultValue=0", "ParameterName=Modes of operation\nObjectType=0x7\nDataType=0x0002\n"
+                         "AccessType=rw\nDefaultValue=8")  # fmt: skip
+    findings = probed(load(DRIVE), described).findings
+    assert [(f.code, f.severity.value) for f in findings] == [("PRB005", "info")]
+    assert findings[0].message == "[6060] Modes of operation: the device holds 0, the file's DefaultValue is 8"
+
+
+def test_an_entry_the_device_does_not_answer() -> None:
+    device = load(DRIVE)
+    with served(device) as (simulator, master):
+        simulator.silence(0x6041)
+        result = Prober(device, NODE, master, ProbeOptions(timeout=0.3)).run()
+    assert [(f.code, f.message) for f in result.findings] == [
+        ("PRB008", "[6041] Statusword: the device does not answer the read")
+    ]
+
+
 def test_wrong_access_found_by_writing_back() -> None:
     device = _mutated("ParameterName=Controlword\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n",
                       "ParameterName=Controlword\nObjectType=0x7\nDataType=0x0006\nAccessType=ro\n")  # fmt: skip

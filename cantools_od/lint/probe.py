@@ -9,6 +9,8 @@ time do not hear each other.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from ..model import Severity
 from ..model.datatypes import STANDARD_TYPES
 from . import examples as ex
@@ -16,7 +18,13 @@ from .rules import declare
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 U16, U32 = (STANDARD_TYPES[n].index for n in (6, 7))  # the data types of the examples' entries
-SPEED = ex.var(0x2000, "Speed", U32, "rw", 5, 0)
+
+
+def _speed() -> str:
+    return ex.var(0x2000, "Speed", U32, "rw", 5, 0)
+
+
+Made = Callable[[], str]
 _PROBE = "`probe` reads every entry of the description over SDO (docs/probe.md)."
 
 
@@ -32,13 +40,14 @@ def _example(port: int, device: str, described: str, probe: str = "", script: st
     return f"{files}; $ {bus}; {simulate} & {run}; kill %1; wait\n"
 
 
-def _declare(code: str, severity: Severity, summary: str, why: str, port: int, device: str, described: str,
+def _declare(code: str, severity: Severity, summary: str, why: str, port: int, device: Made, described: Made,
              fix: str, probe: str = "", script: str = "") -> None:  # fmt: skip
-    """A probe code; its fixed example probes the device with the description it serves (and no script)."""
+    """A probe code; its fixed example probes the device with the description it serves (and no script). The
+    examples are made when read, not when lint imports this module."""
     declare(
         code, severity, summary, f"{why.strip()}\n\n{_PROBE}",
-        _example(port, device, described, probe, script), family="probe",
-        fixed=_example(port + 100, described, described, probe),
+        lambda: _example(port, device(), described(), probe, script), family="probe",
+        fixed=lambda: _example(port + 100, described(), described(), probe),
         fix_safety=f"No automatic fix: {fix}", refs="CiA 301 §7.2.4.3.17 (SDO abort codes)",
     )  # fmt: skip
 
@@ -51,8 +60,8 @@ _declare(
 The description lists an entry the device does not have: its read aborts with 0602 0000h (no object) or
 0609 0011h (no sub-index). A master that configures it, or a tool that trusts the description, fails on it.""",
     43201,
-    SPEED,
-    SPEED + ex.var(0x2001, "Torque", U16, "rw", 0, 0),
+    _speed,
+    lambda: _speed() + ex.var(0x2001, "Torque", U16, "rw", 0, 0),
     "remove the entry from the description, or implement it in the firmware.",
 )
 _declare(
@@ -64,8 +73,8 @@ The device answers a read with another number of bytes than the description's da
 with 0607 0010h/0012h/0013h: the description and the firmware disagree on the type. A PDO mapping or a write
 built from the description then fails (abort 0607 0010h) or reads the wrong bytes.""",
     43202,
-    SPEED,
-    SPEED.replace("DataType=0x0007", "DataType=0x0006"),
+    _speed,
+    lambda: _speed().replace("DataType=0x0007", "DataType=0x0006"),
     "give the entry the data type the firmware implements.",
 )
 _declare(
@@ -76,8 +85,8 @@ _declare(
 The description says the entry can be read (ro, rw, rwr, rww, const) but the device aborts the read: 0601 0001h
 (write only), 0601 0000h (unsupported access) or another abort code.""",
     43203,
-    SPEED.replace("AccessType=rw", "AccessType=wo"),
-    SPEED,
+    lambda: _speed().replace("AccessType=rw", "AccessType=wo"),
+    _speed,
     "give the entry the access type the firmware implements.",
 )
 _declare(
@@ -91,8 +100,8 @@ RevisionNumber when not 0, else the entry's value. A master's boot-up check comp
 1F84h-1F88h, which lely's dcfgen and ros2_canopen fill in from the description; 0 is not checked), and
 refuses to start the node when they differ.""",
     43204,
-    ex.var(0x1000, "Device type", U32, "ro", "0x00040192", 0) + SPEED,
-    ex.var(0x1000, "Device type", U32, "ro", "0x00020192", 0) + SPEED,
+    lambda: ex.var(0x1000, "Device type", U32, "ro", "0x00040192", 0) + _speed(),
+    lambda: ex.var(0x1000, "Device type", U32, "ro", "0x00020192", 0) + _speed(),
     "describe the device as it is (its 1000h/1018h and [DeviceInfo]), or probe the device the description is for.",
 )
 _declare(
@@ -104,8 +113,8 @@ The device holds another value than the description's ParameterValue (a DCF) or 
 was never true, or a device configured since. Values the device produces itself (read-only process inputs,
 its error state) are not compared. `probe -o actual.dcf` keeps what the device holds.""",
     43205,
-    SPEED.replace("DefaultValue=5", "DefaultValue=7"),
-    SPEED,
+    lambda: _speed().replace("DefaultValue=5", "DefaultValue=7"),
+    _speed,
     "correct the default, or restore the device's defaults (1011h) if it was configured by mistake.",
 )
 _declare(
@@ -117,8 +126,8 @@ A value of the communication area (1000h-1FFFh: COB-IDs, PDO transmission, heart
 description's: a master or a network tool planning from the description expects other traffic than the device
 sends.""",
     43206,
-    ex.var(0x1017, "Producer heartbeat time", U16, "rw", 100, 0) + SPEED,
-    ex.var(0x1017, "Producer heartbeat time", U16, "rw", 0, 0) + SPEED,
+    lambda: ex.var(0x1017, "Producer heartbeat time", U16, "rw", 100, 0) + _speed(),
+    lambda: ex.var(0x1017, "Producer heartbeat time", U16, "rw", 0, 0) + _speed(),
     "correct the description, or configure the device as it says.",
 )
 _declare(
@@ -131,8 +140,8 @@ its values): the device aborts the write (0601 0002h: read only, or another code
 (1010h/1011h), program control (1F51h), PDO mappings, and a PDO's inhibit time and SYNC start value (which
 CiA 301 lets change only while the PDO is disabled) are not written.""",
     43207,
-    SPEED.replace("AccessType=rw", "AccessType=ro"),
-    SPEED,
+    lambda: _speed().replace("AccessType=rw", "AccessType=ro"),
+    _speed,
     "give the entry the access type the firmware implements.",
     probe=" --check-writes",
 )
@@ -144,8 +153,8 @@ _declare(
 The device answered other reads but not this one within the timeout (`--timeout`): it may be busy computing
 the value, or its SDO server drops the request. A node that answers nothing is not probed: `probe` exits 2.""",
     43208,
-    SPEED,
-    SPEED,
+    _speed,
+    _speed,
     "find why the firmware does not answer, or give a longer --timeout.",
     script="def setup(node):\n    node.silence(0x2000, 0)  # its SDO server drops the requests for 2000h",
 )

@@ -111,6 +111,12 @@ def test_probe_of_the_stack_with_its_own_eds_finds_only_entries_the_stack_stores
     print(f"\nprobe read {result.read} entries of the CANopenNode device in {result.seconds:.2f} s")
 
 
+def test_writing_back_every_writable_entry_is_refused_nowhere(baseline: set[tuple[str, str]]) -> None:
+    """--check-writes on the stack: no write of a value just read is refused (the inhibit time and SYNC start
+    value of a valid TPDO, which the stack refuses as CiA 301 says, are not written)."""
+    assert {code for code, _ in baseline} == {"PRB001"}, sorted(baseline)
+
+
 @pytest.mark.parametrize(
     ("old", "new", "code"),
     [

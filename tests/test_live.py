@@ -14,6 +14,7 @@ from pathlib import Path
 import can
 import canopen
 import pytest
+from can.interfaces.virtual import VirtualBus
 from livekit import received_on_sync
 
 from cantools_od.api import load, loads
@@ -204,6 +205,64 @@ def test_an_entry_the_device_does_not_answer() -> None:
     assert [(f.code, f.message) for f in result.findings] == [
         ("PRB008", "[6041] Statusword: the device does not answer the read")
     ]
+
+
+def test_a_node_that_stops_answering_ends_the_probe() -> None:
+    device = load(DRIVE)
+    with served(device) as (simulator, master):
+        for sub in range(4):
+            simulator.silence(0x1018, sub)
+        with pytest.raises(NoAnswer, match=r"node 5 stopped answering SDO \(from 1018sub2 on\)"):
+            Prober(device, NODE, master, ProbeOptions(timeout=0.2)).run()
+
+
+@pytest.mark.filterwarnings("error::pytest.PytestUnhandledThreadExceptionWarning")  # a traceback
+def test_a_bus_that_fails_during_the_probe_is_one_line_and_2(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The adapter fails after some frames (unplugged, bus-off): one line, exit 2, as the user sees it."""
+    from click.testing import CliRunner
+
+    from cantools_od.cli import main
+
+    channel = f"live-{next(CHANNELS)}"
+    sent = itertools.count()
+    original = VirtualBus.send
+
+    def failing(bus: can.BusABC, message: can.Message, timeout: float | None = None) -> None:
+        if message.arbitration_id == 0x600 + NODE and next(sent) > 20:
+            raise can.CanOperationError("Transmit buffer full")
+        original(bus, message, timeout)
+
+    node_side = _network(channel)
+    simulator = Simulator(load(DRIVE), NODE, node_side)
+    node_side.connect()
+    simulator.start()
+    try:
+        monkeypatch.setattr(VirtualBus, "send", failing)
+        args = ["probe", str(DRIVE), "--node-id", str(NODE), "-i", "virtual", "-c", channel]
+        result = CliRunner().invoke(main, args)
+    finally:
+        simulator.stop()
+        node_side.disconnect()
+    assert result.exit_code == 2, result.output
+    assert result.output.strip().splitlines()[-1] == "probe: error: the CAN bus failed: Transmit buffer full"
+    assert "Traceback" not in result.output
+
+
+@pytest.mark.filterwarnings("error::pytest.PytestUnhandledThreadExceptionWarning")  # a traceback
+def test_a_bus_that_fails_under_simulate_is_one_line_and_2(monkeypatch: pytest.MonkeyPatch) -> None:
+    from click.testing import CliRunner
+
+    from cantools_od.cli import main
+
+    def failing(bus: can.BusABC, timeout: float | None) -> None:
+        raise can.CanOperationError("the adapter is gone")
+
+    monkeypatch.setattr(VirtualBus, "_recv_internal", failing)
+    args = ["simulate", str(DRIVE), "--node-id", str(NODE), "-i", "virtual", "-c", f"live-{next(CHANNELS)}"]
+    result = CliRunner().invoke(main, [*args, "--duration", "5"])
+    assert result.exit_code == 2, result.output
+    assert result.output.strip().splitlines()[-1] == "simulate: error: the adapter is gone"
+    assert "Traceback" not in result.output
 
 
 def test_wrong_access_found_by_writing_back() -> None:

@@ -58,11 +58,29 @@ def connected(options: BusOptions, command: str) -> Iterator[canopen.Network]:
         sys.exit(EXIT_USAGE)
     network = canopen.Network(bus)
     network.NOTIFIER_CYCLE = RECEIVE_CYCLE
+    listeners: list[Any] = network.listeners  # python-can's listeners; python-canopen annotates its own only
+    listeners.append(_ReceiveFailure())
     try:
         network.connect()
         yield network
     finally:
         _disconnect(network)
+
+
+class _ReceiveFailure:
+    """Told when python-can's receiving thread fails: the failure is kept for `Network.check`, which the
+    commands call and report in one line, instead of python-can raising it again in its thread (a traceback)."""
+
+    def on_message_received(self, message: object) -> None:
+        """Frames are python-canopen's listener's business."""
+
+    __call__ = on_message_received  # what python-can's notifier calls, as its own Listener class does
+
+    def on_error(self, error: Exception) -> None:
+        """Handled: the notifier keeps it as its `exception`."""
+
+    def stop(self) -> None:
+        """Nothing to release."""
 
 
 def _disconnect(network: canopen.Network) -> None:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NoReturn
 
 import click
 
@@ -93,15 +93,28 @@ def _run(prober: Prober) -> ProbeResult:
         sys.exit(EXIT_INTERRUPTED)
     except NoAnswer as error:
         progress.clear()
+        _bus_failed(prober)  # no answers because nothing is received any more
         click.echo(f"probe: error: {error}", err=True)
         sys.exit(EXIT_USAGE)
     except (can.CanError, OSError) as error:
         progress.clear()
-        reason = " ".join(str(error).split()) or type(error).__name__
-        click.echo(f"probe: error: the CAN bus failed: {reason}", err=True)
-        sys.exit(EXIT_USAGE)
+        _say_bus_failed(error)
     progress.clear()
     return result
+
+
+def _bus_failed(prober: Prober) -> None:
+    """When python-can's receiving thread failed: say so (one line, exit 2)."""
+    try:
+        prober.node.network.check()
+    except Exception as error:
+        _say_bus_failed(error)
+
+
+def _say_bus_failed(error: BaseException) -> NoReturn:
+    reason = " ".join(str(error).split()) or type(error).__name__
+    click.echo(f"probe: error: the CAN bus failed: {reason}", err=True)
+    sys.exit(EXIT_USAGE)
 
 
 def _summary(node_id: int, result: ProbeResult, findings: list[Finding]) -> str:

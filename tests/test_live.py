@@ -298,3 +298,59 @@ def test_probe_of_a_corpus_simulation_finds_nothing(path: Path) -> None:
         pytest.skip(str(refused))  # eds-dcf-net's full_features.dcf: an RPDO without its mapping record
     assert result.findings == [], [f.format() for f in result.findings[:3]]
     assert result.read > 0
+
+
+BUS = """\
+master:
+  node_id: 1
+drive:
+  node_id: 5
+  dcf: cia402_drive.eds
+  heartbeat_producer: 100
+  tpdo:
+    1:
+      cob_id: auto
+      transmission: 1
+      mapping:
+        - {index: 0x6041, sub_index: 0}
+        - {index: 0x6064, sub_index: 0}
+  rpdo:
+    1:
+      cob_id: auto
+      mapping:
+        - {index: 0x6040, sub_index: 0}
+  sdo:
+    - {index: 0x6060, sub_index: 0, value: 1}
+"""
+
+
+def test_network_boot_writes_configure_a_simulated_slave(tmp_path: Path) -> None:
+    """`network`'s concise DCF, written by SDO as the master does at boot, is taken by the simulated slave; the
+    slave then holds what `network`'s DCF of it says (probe finds nothing) and sends the TPDO as remapped."""
+    import shutil
+    import subprocess
+
+    from cantools_od.model.cia301.master import read_concise_dcf
+
+    from support import cli_command
+
+    shutil.copy(DRIVE, tmp_path / DRIVE.name)
+    (tmp_path / "bus.yml").write_text(BUS, encoding="utf-8")
+    made = subprocess.run([*cli_command(), "network", "bus.yml", "-o", "out"], cwd=tmp_path, capture_output=True)
+    assert made.returncode == 0, made.stderr
+    writes = read_concise_dcf((tmp_path / "out" / "drive.bin").read_bytes())
+    configured = load(tmp_path / "out" / "drive.dcf")
+    with served(load(DRIVE)) as (simulator, master):
+        node = master.add_node(NODE, canopen.ObjectDictionary())
+        for index, sub, data in writes:
+            node.sdo.download(index, sub, data)
+        simulator.set(0x6041, 0, 0x0237)
+        frames: list[bytes] = []
+        master.subscribe(0x180 + NODE, lambda can_id, data, ts: frames.append(bytes(data)))
+        node.nmt.state = "OPERATIONAL"
+        time.sleep(0.1)
+        master.sync.transmit()
+        time.sleep(0.3)
+        assert frames and frames[-1][:2] == (0x0237).to_bytes(2, "little") and len(frames[-1]) == 6
+        result = Prober(configured, NODE, master, ProbeOptions(timeout=0.5)).run()  # takes the node-ID over
+        assert [f.format() for f in result.findings] == []

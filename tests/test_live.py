@@ -304,23 +304,18 @@ BUS = """\
 master:
   node_id: 1
 drive:
-  node_id: 5
   dcf: cia402_drive.eds
+  node_id: 5
   heartbeat_producer: 100
+  sdo:
+    - {index: 0x6060, sub_index: 0, value: 1}
   tpdo:
     1:
-      cob_id: auto
       transmission: 1
+      cob_id: auto
       mapping:
         - {index: 0x6041, sub_index: 0}
         - {index: 0x6064, sub_index: 0}
-  rpdo:
-    1:
-      cob_id: auto
-      mapping:
-        - {index: 0x6040, sub_index: 0}
-  sdo:
-    - {index: 0x6060, sub_index: 0, value: 1}
 """
 
 

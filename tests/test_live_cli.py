@@ -139,7 +139,7 @@ def test_ctrl_c_during_probe_is_one_line_and_130(tmp_path: Path) -> None:
         after = probe(port, "--timeout", "0.3")
     assert process.returncode == 130
     _one_line_no_traceback(err)
-    assert err.startswith("probe: interrupted after ") and out == ""
+    assert err.startswith("probe: interrupted") and out == ""  # "after N of M entries" once it has started
     assert "[PRB008]" in after.stdout and after.stdout.count("[PRB") == 1  # the node still serves, as found
 
 

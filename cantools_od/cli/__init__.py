@@ -31,6 +31,8 @@ COMMANDS = {
     "cmake-dir": ("cmake_dir", "Print the folder of the CMake package."),
     "diff": ("diff", "Show what changed between two device descriptions, and what it breaks."),
     "network": ("network", "Turn a bus description (bus.yml) into the master's configuration, bus load and DBC."),
+    "simulate": ("simulate", "Serve the node a description describes on a CAN bus (python-can)."),
+    "probe": ("probe", "Read a live node over SDO and report where it differs from its description."),
     "import-table": ("import_table", "Import vendor OD tables (manual text, CSV/TSV, XLSX, Markdown) into an EDS."),
 }
 

@@ -237,10 +237,4 @@ def _bus_findings(bus: str, defines: tuple[str, ...], selection: Selection) -> l
 def _render(fmt: str, findings: list[Finding], files: int) -> str:
     from ..lint import output
 
-    if fmt == "json":
-        return output.as_json(findings)
-    if fmt == "sarif":
-        return output.sarif(findings)
-    if fmt == "github":
-        return output.github(findings)
-    return output.text(findings, files)
+    return output.render(fmt, findings, files)

@@ -56,6 +56,11 @@ FAMILIES: dict[str, Family] = {
         "What the CANopenNode v4 stack needs (lint --profile canopennode)",
         "CiA 301 §7.4 (object dictionary), §7.5.2 (the communication objects the stack implements)",
     ),
+    "probe": Family(
+        "probe",
+        "Reported by probe: a live device against its description",
+        "CiA 301 §7.2.4 (SDO), §7.5.2 (communication objects)",
+    ),
     "import": Family(
         "tool", "Reported by import-table", "CiA 301 §7.4 (object dictionary entries); CiA 306 §4.6.3 (their keys)"
     ),
@@ -221,6 +226,16 @@ NAMES: dict[str, dict[str, str]] = {
         "DIA019": "empty-device-info-number",
         "DIA020": "octal-device-info-number",
         "DIA021": "comments-key-case",
+    },
+    "probe": {
+        "PRB001": "missing-on-device",
+        "PRB002": "length-differs-on-device",
+        "PRB003": "read-refused-by-device",
+        "PRB004": "identity-differs-on-device",
+        "PRB005": "value-differs-on-device",
+        "PRB006": "communication-value-differs-on-device",
+        "PRB007": "write-refused-by-device",
+        "PRB008": "no-answer-from-device",
     },
     "import": {
         "IMP001": "source-unreadable",

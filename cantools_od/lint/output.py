@@ -12,6 +12,17 @@ from ..model.source import capped
 from .rules import RULES, Finding
 
 
+def render(fmt: str, findings: list[Finding], files: int) -> str:
+    """The findings in the `--format` chosen: text, json, sarif or github."""
+    if fmt == "json":
+        return as_json(findings)
+    if fmt == "sarif":
+        return sarif(findings)
+    if fmt == "github":
+        return github(findings)
+    return text(findings, files)
+
+
 def text(findings: list[Finding], files: int) -> str:
     """gcc-style lines, at most a few per code and file (the rest counted), and a summary of all."""
     shown, notes = capped(findings)

@@ -2,14 +2,16 @@
 
 from __future__ import annotations
 
+import asyncio
 import functools
-import sys
+import inspect
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from lsprotocol import types
 
-from . import actions, completion, hover, navigation, outline
+from . import actions, completion, formatting, hover, navigation, outline
+from .rpc import say
 from .where import Index
 
 if TYPE_CHECKING:
@@ -24,12 +26,31 @@ H = TypeVar("H", bound=Callable[..., Any])
 def guarded(handler: H) -> H:
     """A request answers nothing rather than fail: the server logs one line and stays up."""
 
+    def failed(error: Exception) -> None:
+        say(f"{handler.__name__}: {type(error).__name__}: {error}")
+
+    if inspect.iscoroutinefunction(handler):
+
+        @functools.wraps(handler)
+        async def wait(*args: Any) -> Any:
+            try:
+                return await handler(*args)
+            except (asyncio.CancelledError, RuntimeError) as error:  # cancelled, or the document closed meanwhile
+                if isinstance(error, RuntimeError) and "shutdown" not in str(error):
+                    failed(error)
+                raise asyncio.CancelledError() from None
+            except Exception as error:
+                failed(error)
+                return None
+
+        return cast(H, wait)
+
     @functools.wraps(handler)
     def run(*args: Any) -> Any:
         try:
             return handler(*args)
         except Exception as error:
-            print(f"cantools-od lsp: {handler.__name__}: {type(error).__name__}: {error}", file=sys.stderr)
+            failed(error)
             return None
 
     return cast(H, run)
@@ -121,48 +142,79 @@ def _editing(server: OdServer) -> None:
 
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION,
-        types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, types.CodeActionKind.SourceFixAll]),
+        types.CodeActionOptions(
+            code_action_kinds=[types.CodeActionKind.QuickFix, types.CodeActionKind.SourceFixAll], resolve_provider=True
+        ),
     )
     @guarded
-    def on_code_action(ls: OdServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
+    async def on_code_action(ls: OdServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
         uri = params.text_document.uri
         found = ls.current(uri)
         if found is None or found[0].device is None:
             return None
         analysis, _, state = found
         span = (params.range.start.line + 1, params.range.end.line + 1)
-        return actions.code_actions(uri, analysis, state.encoding, ls.options, span, list(params.context.diagnostics))
+        offered = actions.code_actions(uri, analysis, span, list(params.context.diagnostics))
+        if ls.resolves or not offered:
+            return offered
+        return [await ls.in_worker(uri, actions.resolve, a, analysis, state.encoding, ls.options) for a in offered]
 
-    def _format(ls: OdServer, uri: str, within: types.Range | None) -> list[types.TextEdit] | None:
+    @server.feature(types.CODE_ACTION_RESOLVE)
+    @guarded
+    async def on_resolve(ls: OdServer, action: types.CodeAction) -> types.CodeAction:
+        wanted = actions.wanted(action)
+        found = ls.current(wanted[0]) if wanted is not None else None
+        if wanted is None or found is None:
+            return action
+        analysis, _, state = found
+        try:
+            return await ls.in_worker(wanted[0], actions.resolve, action, analysis, state.encoding, ls.options)
+        except actions.NotFixed as reason:
+            ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, f"cantools-od: {reason}"))
+            return action
+
+    async def _format(ls: OdServer, uri: str, within: types.Range | None) -> list[types.TextEdit] | None:
         found = ls.current(uri)
         if found is None:
             return None
+        analysis, _, state = found
         try:
-            return actions.format_edits(uri, found[0], found[2].encoding, within)
-        except actions.NotFormatted as reason:
-            ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, f"cantools-od: {reason}"))
-            return None
+            return await ls.in_worker(uri, formatting.format_edits, uri, analysis, state.encoding, within)
+        except formatting.NotFormatted as reason:
+            message = f"cantools-od: {reason}"
+            if within is None or not state.told:  # format on paste asks at every paste: say it once
+                state.told = within is not None
+                ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, message))
+            ls.window_log_message(types.LogMessageParams(types.MessageType.Info, message))
+            return []
 
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     @guarded
-    def on_formatting(ls: OdServer, params: types.DocumentFormattingParams) -> list[types.TextEdit] | None:
-        return _format(ls, params.text_document.uri, None)
+    async def on_formatting(ls: OdServer, params: types.DocumentFormattingParams) -> list[types.TextEdit] | None:
+        return await _format(ls, params.text_document.uri, None)
 
     @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
     @guarded
-    def on_range_formatting(ls: OdServer, params: types.DocumentRangeFormattingParams) -> list[types.TextEdit] | None:
-        return _format(ls, params.text_document.uri, params.range)
+    async def on_range_formatting(
+        ls: OdServer, params: types.DocumentRangeFormattingParams
+    ) -> list[types.TextEdit] | None:
+        return await _format(ls, params.text_document.uri, params.range)
 
 
 def _outline_and_completion(server: OdServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     @guarded
-    def on_symbols(ls: OdServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol] | None:
-        found = _device(ls, params.text_document.uri)
+    async def on_symbols(ls: OdServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol] | None:
+        uri = params.text_document.uri
+        found = _device(ls, uri)
         if found is None:
             return None
         device, lines, state = found
-        return outline.symbols(device, _index(state, device), lines)
+
+        def symbols() -> list[types.DocumentSymbol]:
+            return outline.symbols(device, _index(state, device), lines)
+
+        return await ls.in_worker(uri, symbols)
 
     @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=["=", "["]))
     @guarded

@@ -157,7 +157,13 @@ def _editing(server: OdServer) -> None:
         offered = actions.code_actions(uri, analysis, span, list(params.context.diagnostics))
         if ls.resolves or not offered:
             return offered
-        return [await ls.in_worker(uri, actions.resolve, a, analysis, state.encoding, ls.options) for a in offered]
+        resolved = []
+        for action in offered:  # a client that cannot resolve gets each edit now
+            try:
+                resolved.append(await ls.in_worker(uri, actions.resolve, action, analysis, state.encoding, ls.options))
+            except actions.NotFixed as reason:
+                say(f"{uri}: {reason}")
+        return resolved
 
     @server.feature(types.CODE_ACTION_RESOLVE)
     @guarded

@@ -156,7 +156,7 @@ async def client(lsp_client: LanguageClient):
 async def test_range_formatting_over_the_protocol_keeps_every_section(client: LanguageClient, tmp_path: Path) -> None:
     source = corpus_file("canopendemo__demoDevice.eds")
     path = tmp_path / source.name
-    path.write_bytes(_with_ends(source.read_bytes(), b"\r\n"))
+    path.write_bytes(_with_ends(source.read_bytes(), b"\n"))
     text = decode_as(path.read_bytes())[0]
     await open_file(client, path, text)
     document = types.TextDocumentIdentifier(path.resolve().as_uri())

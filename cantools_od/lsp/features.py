@@ -222,6 +222,16 @@ def _outline_and_completion(server: OdServer) -> None:
 
         return await ls.in_worker(uri, symbols)
 
+    @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
+    @guarded
+    async def on_folding(ls: OdServer, params: types.FoldingRangeParams) -> list[types.FoldingRange] | None:
+        uri = params.text_document.uri
+        found = _device(ls, uri)
+        if found is None:
+            return None
+        device, lines, state = found
+        return await ls.in_worker(uri, lambda: outline.folding(device, _index(state, device), lines))
+
     @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=["=", "["]))
     @guarded
     def on_completion(ls: OdServer, params: types.CompletionParams) -> types.CompletionList | None:
@@ -235,9 +245,11 @@ def _outline_and_completion(server: OdServer) -> None:
             return None
         document = ls.workspace.get_text_document(uri)
         number = params.position.line
-        text = document.lines[number] if number < len(document.lines) else ""
-        before = text[: document.position_codec.position_from_client_units(document.lines, params.position).character]
+        lines = document.lines
+        text = lines[number] if number < len(lines) else ""
+        column = document.position_codec.position_from_client_units(lines, params.position).character
+        before, after = text[:column], text[column:]
         index = _index(state, device) if device is not None else None
         present = set(device.objects) if device is not None else set()
-        items = completion.complete(index, before, number + 1, present)
+        items = completion.complete(index, before, number + 1, present, after)
         return types.CompletionList(is_incomplete=False, items=items)

@@ -56,7 +56,8 @@ class OdProtocol(LanguageServerProtocol):
 
     def parse_error(self, error: Exception) -> None:
         """Text that is no JSON: answered as JSON-RPC says (id null)."""
-        self._send_response(None, error=JsonRpcParseError(f"not JSON: {error}").to_response_error())  # type: ignore[arg-type]
+        code = JsonRpcParseError.CODE
+        self._send_data({"jsonrpc": "2.0", "id": None, "error": {"code": code, "message": f"not JSON: {error}"}})
 
 
 class OneLine(logging.Formatter):

@@ -19,6 +19,7 @@ from .document import Analysis, Encoding, analyse, path_of
 from .incremental import reanalyse
 from .positions import Lines
 from .quick import quick_findings
+from .text import faster
 from .rpc import OdProtocol, is_parse_error, log_in_one_line, say
 
 DEBOUNCE = 0.1
@@ -95,9 +96,10 @@ class OdServer(LanguageServer):
 
     def report_server_error(self, error: Exception, source: Any) -> None:
         """An error outside a request: one line in the log, never a pop-up with a Python exception's name."""
-        if is_parse_error(error):
+        if is_parse_error(error):  # pygls has logged it
             assert isinstance(self.protocol, OdProtocol)
             self.protocol.parse_error(error)
+            return
         say(f"{type(error).__name__}: {error}")
 
     def recheck_all(self) -> None:
@@ -153,12 +155,18 @@ class OdServer(LanguageServer):
         document = self.workspace.get_text_document(uri)
         text, version = document.source, document.version
         analysis = await self.analysed(uri, state, text, version)
+        try:  # the lines of a large text take a while to find: not on the loop that answers every document
+            lines, found = await self.in_worker(uri, self._published, analysis, text)
+        except RuntimeError:  # closed meanwhile
+            return
         if self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
             return
-        state.analysis, state.lines, state.cache = analysis, Lines(text), {}
-        self.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri, diagnostics(analysis, state.lines, self.rules_url), version)
-        )
+        state.analysis, state.lines, state.cache = analysis, lines, {}
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found, version))
+
+    def _published(self, analysis: Analysis, text: str) -> tuple[Lines, list[types.Diagnostic]]:
+        lines = Lines(text)
+        return lines, diagnostics(analysis, lines, self.rules_url)
 
     async def analysed(self, uri: str, state: Open, text: str, version: int | None) -> Analysis:
         """The text read and linted in the worker: after an edit inside one object, only that object read
@@ -225,6 +233,7 @@ def build() -> OdServer:
     @server.feature(types.INITIALIZE)
     def initialize(ls: OdServer, params: types.InitializeParams) -> None:
         ls.resolves = _resolves(params.capabilities)
+        faster(ls.workspace)
         ls.configure(params.initialization_options)
 
     @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import contextlib
 import os
 import statistics
 import sys
@@ -161,10 +162,8 @@ class Bench:
         started = time.perf_counter()
         await asyncio.sleep(0.05)
         request.cancel()
-        try:
+        with contextlib.suppress(asyncio.CancelledError, Exception):  # the server answers "request cancelled"
             await request
-        except (asyncio.CancelledError, Exception):  # the server answers "request cancelled"
-            pass
         return whole, (time.perf_counter() - started) * 1000
 
 

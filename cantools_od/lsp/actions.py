@@ -34,7 +34,7 @@ def _path(uri: str) -> Path:
     return path_of(uri) or Path(uri.rsplit("/", 1)[-1])
 
 
-def fixed_text(uri: str, analysis: Analysis, encoding: Encoding, options: LintOptions, chosen: list[list[Any]]) -> str:
+def fixed_text(uri: str, analysis: Analysis, encoding: Encoding, options: LintOptions, chosen: list[Any]) -> str:
     """The document with the fixes of the findings keyed `chosen` (ALL: every safe fix) applied as `lint --fix`
     applies them: each to the model read afresh from the same text, then written back by the preserving writer."""
     mangled = encoding.mangled(analysis.text)

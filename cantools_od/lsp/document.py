@@ -7,10 +7,10 @@ from pathlib import Path
 from urllib.parse import unquote, urlparse
 
 from ..eds.decode import CP1252, decode_as, encode
-from .mojibake import restored
 from ..lint import Finding, LintOptions, Selection, load_selection
 from ..lint.runner import Linted, linted
 from ..model import Device
+from .mojibake import restored
 
 _BOM = b"\xef\xbb\xbf"
 

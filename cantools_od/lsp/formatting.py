@@ -176,7 +176,9 @@ def format_edits(uri: str, analysis: Analysis, encoding: Encoding, within: types
     lines = _selected(within, len(Lines(old)))
     start, stop = _span(old, lines)
     change = whole[0].range
-    if start <= change.start.line and (change.end.line < stop or change.end.line == stop and change.end.character == 0):
+    if start <= change.start.line and (
+        change.end.line < stop or (change.end.line == stop and change.end.character == 0)
+    ):
         return whole
     if format_for(_path(uri)) in ("eds", "dcf"):
         result = _in_place(uri, old, new, encoding, lines)

@@ -121,7 +121,9 @@ def symbols(device: Device, index: Index, lines: Lines) -> list[types.DocumentSy
     for spot in index.headers:
         if spot.owner is None:
             whole, header = extent.range(spot)
-            found.append((spot.line, types.DocumentSymbol(extent.name(spot), types.SymbolKind.Namespace, whole, header)))
+            found.append(
+                (spot.line, types.DocumentSymbol(extent.name(spot), types.SymbolKind.Namespace, whole, header))
+            )
     return [symbol for _, symbol in sorted(found, key=lambda pair: pair[0])]
 
 

@@ -19,8 +19,8 @@ from .document import Analysis, Encoding, analyse, path_of
 from .incremental import reanalyse
 from .positions import Lines
 from .quick import quick_findings
-from .text import faster
 from .rpc import OdProtocol, is_parse_error, log_in_one_line, say
+from .text import faster
 
 DEBOUNCE = 0.1
 """Seconds of quiet after an edit before the document is read and linted again, when the edit follows another
@@ -32,7 +32,9 @@ class Open:
     """An open document: its encoding on disk, its queue of work, its last analysis and the re-check waiting."""
 
     encoding: Encoding
-    worker: ThreadPoolExecutor
+    worker: ThreadPoolExecutor = field(
+        default_factory=lambda: ThreadPoolExecutor(max_workers=1, thread_name_prefix="lint")
+    )
     """This document's queue: checks, fixes, outline and formatting of one document run one after another,
     beside (not behind) those of every other document."""
     analysis: Analysis | None = None
@@ -52,7 +54,7 @@ class Open:
 
     @staticmethod
     def of(uri: str) -> Open:
-        return Open(Encoding.of_file(path_of(uri)), ThreadPoolExecutor(max_workers=1, thread_name_prefix="lint"))
+        return Open(Encoding.of_file(path_of(uri)))
 
 
 R = TypeVar("R")

@@ -67,7 +67,9 @@ async def test_text_with_replacement_characters_is_neither_formatted_nor_fixed(
     client: LanguageClient, tmp_path: Path
 ) -> None:
     path = tmp_path / "drive.eds"
-    lines = (EXAMPLES / "cia402_drive.eds").read_text().replace("SupportedObjects=3", "SupportedObjects=7", 1).split("\n")
+    lines = (
+        (EXAMPLES / "cia402_drive.eds").read_text().replace("SupportedObjects=3", "SupportedObjects=7", 1).split("\n")
+    )
     lines.insert(1, "; Schönaich")
     path.write_bytes("\n".join(lines).encode("cp1252"))
     text = _as_vscode_shows(path)

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 import pytest_lsp
-from lspkit import SERVER, Lint, close_file, diagnostics_for, expected, open_file, seen, start
+from lspkit import SERVER, Lint, close_file, expected, open_file, seen, start
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
@@ -59,7 +59,7 @@ def test_every_server_setting_is_a_vscode_setting() -> None:
     extension = (ROOT / "editors" / "vscode" / "src" / "extension.ts").read_text(encoding="utf-8")
     assert 'configurationSection: "cantools-od"' in extension
     for setting in ("nodeId", "canFd", "profile"):
-        assert f'settings.get<' in extension and f'("{setting}"' in extension, setting
+        assert "settings.get<" in extension and f'("{setting}"' in extension, setting
 
 
 async def test_a_change_to_a_document_never_opened_shows_no_error(client: LanguageClient, tmp_path: Path) -> None:
@@ -93,7 +93,9 @@ def test_messages_that_do_not_fit_are_answered_and_logged_in_one_line() -> None:
         + _frame(json.dumps({"jsonrpc": "2.0", "method": "exit"}).encode())
     )
     done = subprocess.run([*cli_command(), "lsp"], input=sent, capture_output=True, timeout=60)
-    answers = [json.loads(body) for body in re.split(rb"Content-Length: \d+\r\n(?:[^\r\n]+\r\n)*\r\n", done.stdout) if body]
+    answers = [
+        json.loads(body) for body in re.split(rb"Content-Length: \d+\r\n(?:[^\r\n]+\r\n)*\r\n", done.stdout) if body
+    ]
     assert any(a.get("error", {}).get("code") == -32700 and "id" in a and a["id"] is None for a in answers), answers
     assert any(a.get("id") == 1 and "result" in a for a in answers), answers
     assert any(a.get("id") == 7 and a.get("error", {}).get("code") == -32602 for a in answers), answers

@@ -163,7 +163,9 @@ async def test_range_formatting_over_the_protocol_keeps_every_section(client: La
     for first, last in ((300, 306), (1000, 1011)):
         reply = await client.text_document_range_formatting_async(
             types.DocumentRangeFormattingParams(
-                document, types.Range(types.Position(first, 0), types.Position(last, 0)), types.FormattingOptions(4, True)
+                document,
+                types.Range(types.Position(first, 0), types.Position(last, 0)),
+                types.FormattingOptions(4, True),
             )
         )
         after = apply(text, list(reply or []))

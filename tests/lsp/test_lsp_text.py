@@ -12,11 +12,17 @@ from cantools_od.lsp.text import Text
 from support import EXAMPLES
 
 LF = (EXAMPLES / "cia402_drive.eds").read_text(encoding="utf-8") + "Name=é𝄞x\n\nlast"
+TEXTS = ["", "x", "a\nb", "\n", "\r\n", "DefaultValue=1\r\n", "é", "𝄞", "\r"]
 BASES = [LF, LF.replace("\n", "\r\n"), LF.replace("\n", "\r\n", 40)]
 
 
 def _units(line: str) -> int:
     return len(line.removesuffix("\r").encode("utf-16-le")) // 2
+
+
+def _column(lines: list[str], line: int, wanted: int) -> int:
+    """A position inside the line: past its end, clients never send."""
+    return min(wanted, _units(lines[line])) if line < len(lines) else 0
 
 
 @st.composite
@@ -27,7 +33,7 @@ def _edits(draw: st.DrawFn) -> list[tuple[int, int, int, int, str]]:
         first = draw(st.integers(0, count + 1))
         last = draw(st.integers(first, count + 1))
         found.append((first, draw(st.integers(0, 12)), last, draw(st.integers(0, 12)),
-                      draw(st.sampled_from(["", "x", "a\nb", "\n", "\r\n", "DefaultValue=1\r\n", "é", "𝄞", "\r"]))))  # fmt: skip
+                      draw(st.sampled_from(TEXTS))))  # fmt: skip
     return found
 
 
@@ -38,11 +44,7 @@ def test_an_edit_gives_the_text_pygls_gives(base: str, edits: list[tuple[int, in
     ours.__class__ = Text
     for first, first_column, last, last_column, text in edits:
         lines = theirs.source.split("\n")
-
-        def column(line: int, wanted: int) -> int:  # a position inside the line (past its end, clients never send)
-            return min(wanted, _units(lines[line])) if line < len(lines) else 0
-
-        start, end = column(first, first_column), column(last, last_column)
+        start, end = _column(lines, first, first_column), _column(lines, last, last_column)
         if first == last and end < start:
             start, end = end, start
         change = types.TextDocumentContentChangePartial(

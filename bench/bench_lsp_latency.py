@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 import asyncio
 import contextlib
+import logging
 import os
 import statistics
 import sys
@@ -198,6 +199,7 @@ def main() -> None:
     parser.add_argument("--big-size", type=parse_size, default=parse_size("20M"))
     parser.add_argument("--rounds", type=int, default=40)
     args = parser.parse_args()
+    logging.getLogger("pygls").setLevel(logging.CRITICAL)  # the client's own note on an answer to a cancelled request
     small = args.file or _largest()
     with tempfile.TemporaryDirectory() as folder:
         big = Path(folder) / "big.eds"

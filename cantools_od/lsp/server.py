@@ -210,17 +210,21 @@ class OdServer(LanguageServer):
         state = self.open[uri]
         try:
             found = await asyncio.get_running_loop().run_in_executor(
-                state.worker, quick_findings, before, text, uri, state.encoding, self.options
+                state.worker, self._quick, uri, before, text, state.encoding
             )
         except Exception as error:  # the full check answers all the same
             say(f"{uri}: quick check: {type(error).__name__}: {error}")
             return
         if found is None or self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
             return
-        quick = Analysis(None, text, None, found)
-        self.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri, diagnostics(quick, Lines(text), self.rules_url))
-        )
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found))
+
+    def _quick(self, uri: str, before: Analysis, text: str, encoding: Encoding) -> list[types.Diagnostic] | None:
+        """In the worker: the quick findings as diagnostics."""
+        found = quick_findings(before, text, uri, encoding, self.options)
+        if found is None:
+            return None
+        return diagnostics(Analysis(None, text, None, found), Lines(text), self.rules_url)
 
 
 def _resolves(capabilities: types.ClientCapabilities) -> bool:

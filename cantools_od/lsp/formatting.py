@@ -77,7 +77,7 @@ def _formatted_text(uri: str, text: str, encoding: Encoding) -> str | None:
     """`fmt` of any text, None when fmt would leave it."""
     try:
         device = read(uri, encoding.bytes(text))
-        return _canonical(uri, device, read(uri, encoding.bytes(text)))
+        return _canonical(uri, device, device)  # read for this check alone: dumps may use it
     except (NotFormatted, NotADeviceDescription, RecursionError):
         return None
 

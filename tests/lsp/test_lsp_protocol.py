@@ -202,3 +202,32 @@ async def test_each_section_folds(client: LanguageClient, tmp_path: Path) -> Non
         if last > header:
             assert (header, last) in folds, lines[header]
     close_file(client, path)
+
+
+async def _hover(client: LanguageClient, path: Path, line: int) -> str:
+    document = types.TextDocumentIdentifier(path.resolve().as_uri())
+    found = await client.text_document_hover_async(types.HoverParams(document, types.Position(line, 1)))
+    assert found is not None and isinstance(found.contents, types.MarkupContent)
+    return found.contents.value
+
+
+async def test_hover_on_a_device_info_key_and_on_a_mapping_header(client: LanguageClient, tmp_path: Path) -> None:
+    path = tmp_path / "drive.eds"
+    shutil.copyfile(DRIVE, path)
+    await open_file(client, path)
+    lines = DRIVE.read_text().splitlines()
+    rates = {line.split("=")[0]: line.split("=")[1] for line in lines if line.startswith("BaudRate_")}
+    for key, value in rates.items():
+        said = await _hover(client, path, lines.index(f"{key}={value}"))
+        rate = key.removeprefix("BaudRate_")
+        assert f"{rate} kbit/s: {'supported' if value == '1' else 'not supported'}" in said, said
+    header = lines.index("[1A00]")
+    mapped = [line.split("=")[1] for line in lines[header:] if line.startswith("DefaultValue=0x6")][:2]
+    said = await _hover(client, path, header)
+    offset = 0
+    for raw in mapped:  # each mapping entry's bits follow the one before
+        value = int(raw, 16)
+        bits = value & 0xFF
+        assert f"| {offset}-{offset + bits - 1} | {value >> 16:04X}h sub{(value >> 8) & 0xFF:X} |" in said, said
+        offset += bits
+    close_file(client, path)

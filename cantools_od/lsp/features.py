@@ -21,6 +21,8 @@ if TYPE_CHECKING:
 
 
 H = TypeVar("H", bound=Callable[..., Any])
+WORKSPACE_SYMBOLS = 500
+"""At most this many objects answer a workspace symbol search (the open documents' objects, in order)."""
 
 
 def guarded(handler: H) -> H:
@@ -221,6 +223,18 @@ def _outline_and_completion(server: OdServer) -> None:
             return outline.symbols(device, _index(state, device), lines)
 
         return await ls.in_worker(uri, symbols)
+
+    @server.feature(types.WORKSPACE_SYMBOL)
+    @guarded
+    def on_workspace_symbols(ls: OdServer, params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
+        found: list[types.WorkspaceSymbol] = []
+        for uri in list(ls.open):
+            current = _device(ls, uri)
+            if current is not None and len(found) < WORKSPACE_SYMBOLS:
+                device, lines, state = current
+                left = WORKSPACE_SYMBOLS - len(found)
+                found += outline.workspace_symbols(uri, device, _index(state, device), lines, params.query, left)
+        return found
 
     @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
     @guarded

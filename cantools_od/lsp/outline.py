@@ -136,3 +136,21 @@ def folding(device: Device, index: Index, lines: Lines) -> list[types.FoldingRan
         if whole.end.line > whole.start.line:
             found.append(types.FoldingRange(whole.start.line, whole.end.line, kind=types.FoldingRangeKind.Region))
     return found
+
+
+def workspace_symbols(
+    uri: str, device: Device, index: Index, lines: Lines, query: str, limit: int
+) -> list[types.WorkspaceSymbol]:
+    """The objects of one document whose `index name` holds every word of the query (any case)."""
+    words = query.lower().split()
+    found = []
+    for obj in device.objects.values():
+        name = f"{obj.index:04X} {obj.name}".rstrip()
+        spot = index.header_of(obj)
+        if spot is None or obj.implicit or not all(word in name.lower() for word in words):
+            continue
+        where = types.Location(uri, lines.whole_line(spot.line))
+        found.append(types.WorkspaceSymbol(where, name, _KIND.get(obj.kind, types.SymbolKind.Object)))
+        if len(found) >= limit:
+            break
+    return found

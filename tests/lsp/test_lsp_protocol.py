@@ -231,3 +231,20 @@ async def test_hover_on_a_device_info_key_and_on_a_mapping_header(client: Langua
         assert f"| {offset}-{offset + bits - 1} | {value >> 16:04X}h sub{(value >> 8) & 0xFF:X} |" in said, said
         offset += bits
     close_file(client, path)
+
+
+async def test_workspace_symbols_find_objects_of_every_open_document(client: LanguageClient, tmp_path: Path) -> None:
+    first, second = tmp_path / "drive.eds", tmp_path / "io.eds"
+    shutil.copyfile(DRIVE, first)
+    shutil.copyfile(EXAMPLES / "io_device.eds", second)
+    await open_file(client, first)
+    await open_file(client, second)
+    found = await client.workspace_symbol_async(types.WorkspaceSymbolParams(query="1018 identity"))
+    places = {(s.name.split(" ")[0], s.location.uri) for s in found or [] if isinstance(s.location, types.Location)}
+    assert places == {("1018", first.resolve().as_uri()), ("1018", second.resolve().as_uri())}
+    for symbol in found or []:
+        assert isinstance(symbol.location, types.Location)
+        path = first if symbol.location.uri == first.resolve().as_uri() else second
+        assert path.read_text().splitlines()[symbol.location.range.start.line] == "[1018]"
+    close_file(client, first)
+    close_file(client, second)

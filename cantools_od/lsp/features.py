@@ -37,10 +37,13 @@ def guarded(handler: H) -> H:
         async def wait(*args: Any) -> Any:
             try:
                 return await handler(*args)
-            except (asyncio.CancelledError, RuntimeError) as error:  # cancelled, or the document closed meanwhile
-                if isinstance(error, RuntimeError) and "shutdown" not in str(error):
-                    failed(error)
-                raise asyncio.CancelledError() from None
+            except asyncio.CancelledError:  # $/cancelRequest: pygls answers "request cancelled"
+                raise
+            except RuntimeError as error:
+                if "shutdown" in str(error):  # the document was closed meanwhile: as if cancelled
+                    raise asyncio.CancelledError() from None
+                failed(error)
+                return None
             except Exception as error:
                 failed(error)
                 return None

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 import pytest_lsp
-from lspkit import SERVER, Lint, close_file, expected, open_file, seen, start
+from lspkit import SERVER, Lint, close_file, diagnostics_for, expected, open_file, seen, start
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
@@ -248,3 +248,27 @@ async def test_workspace_symbols_find_objects_of_every_open_document(client: Lan
         assert path.read_text().splitlines()[symbol.location.range.start.line] == "[1018]"
     close_file(client, first)
     close_file(client, second)
+
+
+async def test_an_outline_cancelled_before_it_starts_is_not_made(client: LanguageClient, tmp_path: Path) -> None:
+    from pygls.exceptions import JsonRpcRequestCancelled
+
+    from support import CORPUS
+
+    source = max(CORPUS.glob("*.eds"), key=lambda p: p.stat().st_size, default=DRIVE)  # a check that takes a while
+    path = tmp_path / source.name
+    shutil.copyfile(source, path)
+    await open_file(client, path)
+    uri = path.resolve().as_uri()
+    change = types.TextDocumentContentChangePartial(types.Range(types.Position(0, 0), types.Position(0, 0)), "; x\n")
+    client.text_document_did_change(  # a header line moves every section: the whole text is read again
+        types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(2, uri), [change])
+    )
+    await asyncio.sleep(0.05)  # the check has started in the document's queue; the outline waits behind it
+    params = types.DocumentSymbolParams(types.TextDocumentIdentifier(uri))
+    request = client.protocol.send_request(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL, params, msg_id="outline-1")
+    client.protocol.notify(types.CANCEL_REQUEST, types.CancelParams(id="outline-1"))
+    with pytest.raises(JsonRpcRequestCancelled):
+        await asyncio.wait_for(asyncio.wrap_future(request), 60)
+    await diagnostics_for(client, uri, 2)
+    close_file(client, path)

@@ -22,13 +22,27 @@ def _item(label: str, detail: str, kind: types.CompletionItemKind, insert: str |
     return types.CompletionItem(label, kind=kind, detail=detail, insert_text=insert, filter_text=f"{label} {detail}")
 
 
-def _sections(present: set[int]) -> list[types.CompletionItem]:
-    items = [_item(name, "section", types.CompletionItemKind.Module, f"{name}]") for name in _SECTIONS]
+def _section(name: str, detail: str, kind: types.CompletionItemKind, header: types.Range) -> types.CompletionItem:
+    """A header, replacing what `header` covers (the "[" typed, the name begun and a "]" the editor may have
+    closed it with): `[name]` once, whatever the editor added."""
+    edit = types.TextEdit(header, f"[{name}]")
+    return types.CompletionItem(name, kind=kind, detail=detail, text_edit=edit, filter_text=f"[{name} {detail}")
+
+
+def _sections(present: set[int], header: types.Range) -> list[types.CompletionItem]:
+    items = [_section(name, "section", types.CompletionItemKind.Module, header) for name in _SECTIONS]
     for found in (*definitions.DEFINITIONS, *cia402.DEFINITIONS):
         for index in found.indices[:4]:  # the first few of a range (PDOs, SDOs) are the ones written by hand
             if index not in present:
-                items.append(_item(f"{index:04X}", found.name, types.CompletionItemKind.Class, f"{index:04X}]"))
+                items.append(_section(f"{index:04X}", found.name, types.CompletionItemKind.Class, header))
     return items
+
+
+def header_range(line: int, before: str, after: str) -> types.Range:
+    """From the "[" that starts the text before the cursor to the cursor, and over a "]" right after it."""
+    start = len(before) - len(before.lstrip())  # blanks only: as many UTF-16 units as characters
+    end = len(before.encode("utf-16-le")) // 2 + (1 if after.startswith("]") else 0)
+    return types.Range(types.Position(line, start), types.Position(line, end))
 
 
 def _keys(spot: Spot | None, written: set[str]) -> list[types.CompletionItem]:
@@ -70,13 +84,15 @@ def _values(key: str, spot: Spot | None) -> list[types.CompletionItem]:
     return []
 
 
-def complete(index: Index | None, line_text: str, line: int, present: set[int]) -> list[types.CompletionItem]:
-    """Items for the text before the cursor on a line (from 1) of an EDS/DCF."""
+def complete(
+    index: Index | None, line_text: str, line: int, present: set[int], after: str = ""
+) -> list[types.CompletionItem]:
+    """Items for the text before the cursor (and after it, `after`) on a line (from 1) of an EDS/DCF."""
     stripped = line_text.lstrip()
     if stripped.startswith((";", "#")):
         return []
     if stripped.startswith("["):
-        return [] if "]" in stripped else _sections(present)
+        return [] if "]" in stripped else _sections(present, header_range(line - 1, line_text, after))
     spot = index.section_at(line) if index is not None else None
     if "=" in stripped:
         return _values(normalize(stripped.split("=", 1)[0]), spot)

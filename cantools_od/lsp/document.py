@@ -10,6 +10,7 @@ from ..eds.decode import CP1252, decode_as, encode
 from ..lint import Finding, LintOptions, Selection, load_selection
 from ..lint.runner import Linted, linted
 from ..model import Device
+from .mojibake import restored
 
 _BOM = b"\xef\xbb\xbf"
 
@@ -24,20 +25,44 @@ def path_of(uri: str) -> Path | None:
 
 @dataclass(frozen=True)
 class Encoding:
-    """How the document's text becomes bytes again: the codec its file was read with, and its BOM."""
+    """How the document's text becomes bytes again: the codec its file was read with, its BOM, and what the
+    file held where an editor that decoded it as UTF-8 shows replacement characters (U+FFFD)."""
 
     codec: str = "utf-8"
     bom: bool = False
+    original: bytes = b""
+    """The file's bytes when it is not UTF-8 (Windows-1252, a DOS code page): what the U+FFFD stand for."""
+    on_disk: bool = False
+    """The document is a file that could be read."""
+    replaced: bool = False
+    """The file, decoded as `lint` decodes it, holds U+FFFD itself."""
 
     @staticmethod
     def of_file(path: Path | None) -> Encoding:
         try:
-            data = path.read_bytes() if path is not None else b""
+            data = path.read_bytes() if path is not None else None
         except OSError:
-            data = b""
-        return Encoding(decode_as(data)[1], data.startswith(_BOM))
+            data = None
+        if data is None:
+            return Encoding()
+        text, codec, _ = decode_as(data)
+        return Encoding(codec, data.startswith(_BOM), data if codec != "utf-8" else b"", True, "\ufffd" in text)
+
+    def mangled(self, text: str) -> str | None:
+        """Why the text cannot be written back: it holds replacement characters the file does not (the editor
+        decoded the file with another encoding than the file's); None when it can."""
+        if not self.on_disk or self.replaced or "\ufffd" not in text:
+            return None
+        count = text.count("\ufffd")
+        page = "Windows-1252" if self.codec == CP1252 else "its encoding"
+        return (
+            f"not changed: the editor shows {count} replacement character{'s' if count != 1 else ''} (U+FFFD) the "
+            f"file does not hold; reopen the file as {page} (cantools-od reads it so)"
+        )
 
     def bytes(self, text: str) -> bytes:
+        if self.original and not self.replaced and "\ufffd" in text:
+            return (_BOM if self.bom else b"") + restored(text, self.original.removeprefix(_BOM))
         try:
             body = encode(text, self.codec)
         except UnicodeEncodeError:  # a character the file's code page cannot hold: the editor's text wins

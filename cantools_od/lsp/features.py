@@ -2,14 +2,16 @@
 
 from __future__ import annotations
 
+import asyncio
 import functools
-import sys
+import inspect
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from lsprotocol import types
 
-from . import actions, completion, hover, navigation, outline
+from . import actions, completion, formatting, hover, navigation, outline
+from .rpc import say
 from .where import Index
 
 if TYPE_CHECKING:
@@ -19,17 +21,41 @@ if TYPE_CHECKING:
 
 
 H = TypeVar("H", bound=Callable[..., Any])
+WORKSPACE_SYMBOLS = 500
+"""At most this many objects answer a workspace symbol search (the open documents' objects, in order)."""
 
 
 def guarded(handler: H) -> H:
     """A request answers nothing rather than fail: the server logs one line and stays up."""
+
+    def failed(error: Exception) -> None:
+        say(f"{handler.__name__}: {type(error).__name__}: {error}")
+
+    if inspect.iscoroutinefunction(handler):
+
+        @functools.wraps(handler)
+        async def wait(*args: Any) -> Any:
+            try:
+                return await handler(*args)
+            except asyncio.CancelledError:  # $/cancelRequest: pygls answers "request cancelled"
+                raise
+            except RuntimeError as error:
+                if "shutdown" in str(error):  # the document was closed meanwhile: as if cancelled
+                    raise asyncio.CancelledError() from None
+                failed(error)
+                return None
+            except Exception as error:
+                failed(error)
+                return None
+
+        return cast(H, wait)
 
     @functools.wraps(handler)
     def run(*args: Any) -> Any:
         try:
             return handler(*args)
         except Exception as error:
-            print(f"cantools-od lsp: {handler.__name__}: {type(error).__name__}: {error}", file=sys.stderr)
+            failed(error)
             return None
 
     return cast(H, run)
@@ -121,48 +147,107 @@ def _editing(server: OdServer) -> None:
 
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION,
-        types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, types.CodeActionKind.SourceFixAll]),
+        types.CodeActionOptions(
+            code_action_kinds=[types.CodeActionKind.QuickFix, types.CodeActionKind.SourceFixAll], resolve_provider=True
+        ),
     )
     @guarded
-    def on_code_action(ls: OdServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
+    async def on_code_action(ls: OdServer, params: types.CodeActionParams) -> list[types.CodeAction] | None:
         uri = params.text_document.uri
         found = ls.current(uri)
         if found is None or found[0].device is None:
             return None
         analysis, _, state = found
         span = (params.range.start.line + 1, params.range.end.line + 1)
-        return actions.code_actions(uri, analysis, state.encoding, ls.options, span, list(params.context.diagnostics))
+        offered = actions.code_actions(uri, analysis, span, list(params.context.diagnostics))
+        if ls.resolves or not offered:
+            return offered
+        resolved = []
+        for action in offered:  # a client that cannot resolve gets each edit now
+            try:
+                resolved.append(await ls.in_worker(uri, actions.resolve, action, analysis, state.encoding, ls.options))
+            except actions.NotFixed as reason:
+                say(f"{uri}: {reason}")
+        return resolved
 
-    def _format(ls: OdServer, uri: str, within: types.Range | None) -> list[types.TextEdit] | None:
+    @server.feature(types.CODE_ACTION_RESOLVE)
+    @guarded
+    async def on_resolve(ls: OdServer, action: types.CodeAction) -> types.CodeAction:
+        wanted = actions.wanted(action)
+        found = ls.current(wanted[0]) if wanted is not None else None
+        if wanted is None or found is None:
+            return action
+        analysis, _, state = found
+        try:
+            return await ls.in_worker(wanted[0], actions.resolve, action, analysis, state.encoding, ls.options)
+        except actions.NotFixed as reason:
+            ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, f"cantools-od: {reason}"))
+            return action
+
+    async def _format(ls: OdServer, uri: str, within: types.Range | None) -> list[types.TextEdit] | None:
         found = ls.current(uri)
         if found is None:
             return None
+        analysis, _, state = found
         try:
-            return actions.format_edits(uri, found[0], found[2].encoding, within)
-        except actions.NotFormatted as reason:
-            ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, f"cantools-od: {reason}"))
-            return None
+            return await ls.in_worker(uri, formatting.format_edits, uri, analysis, state.encoding, within)
+        except formatting.NotFormatted as reason:
+            message = f"cantools-od: {reason}"
+            if within is None or not state.told:  # format on paste asks at every paste: say it once
+                state.told = within is not None
+                ls.window_show_message(types.ShowMessageParams(types.MessageType.Warning, message))
+            ls.window_log_message(types.LogMessageParams(types.MessageType.Info, message))
+            return []
 
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     @guarded
-    def on_formatting(ls: OdServer, params: types.DocumentFormattingParams) -> list[types.TextEdit] | None:
-        return _format(ls, params.text_document.uri, None)
+    async def on_formatting(ls: OdServer, params: types.DocumentFormattingParams) -> list[types.TextEdit] | None:
+        return await _format(ls, params.text_document.uri, None)
 
     @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
     @guarded
-    def on_range_formatting(ls: OdServer, params: types.DocumentRangeFormattingParams) -> list[types.TextEdit] | None:
-        return _format(ls, params.text_document.uri, params.range)
+    async def on_range_formatting(
+        ls: OdServer, params: types.DocumentRangeFormattingParams
+    ) -> list[types.TextEdit] | None:
+        return await _format(ls, params.text_document.uri, params.range)
 
 
 def _outline_and_completion(server: OdServer) -> None:
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     @guarded
-    def on_symbols(ls: OdServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol] | None:
-        found = _device(ls, params.text_document.uri)
+    async def on_symbols(ls: OdServer, params: types.DocumentSymbolParams) -> list[types.DocumentSymbol] | None:
+        uri = params.text_document.uri
+        found = _device(ls, uri)
         if found is None:
             return None
         device, lines, state = found
-        return outline.symbols(device, _index(state, device), lines)
+
+        def symbols() -> list[types.DocumentSymbol]:
+            return outline.symbols(device, _index(state, device), lines)
+
+        return await ls.in_worker(uri, symbols)
+
+    @server.feature(types.WORKSPACE_SYMBOL)
+    @guarded
+    def on_workspace_symbols(ls: OdServer, params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
+        found: list[types.WorkspaceSymbol] = []
+        for uri in list(ls.open):
+            current = _device(ls, uri)
+            if current is not None and len(found) < WORKSPACE_SYMBOLS:
+                device, lines, state = current
+                left = WORKSPACE_SYMBOLS - len(found)
+                found += outline.workspace_symbols(uri, device, _index(state, device), lines, params.query, left)
+        return found
+
+    @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
+    @guarded
+    async def on_folding(ls: OdServer, params: types.FoldingRangeParams) -> list[types.FoldingRange] | None:
+        uri = params.text_document.uri
+        found = _device(ls, uri)
+        if found is None:
+            return None
+        device, lines, state = found
+        return await ls.in_worker(uri, lambda: outline.folding(device, _index(state, device), lines))
 
     @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=["=", "["]))
     @guarded
@@ -177,9 +262,11 @@ def _outline_and_completion(server: OdServer) -> None:
             return None
         document = ls.workspace.get_text_document(uri)
         number = params.position.line
-        text = document.lines[number] if number < len(document.lines) else ""
-        before = text[: document.position_codec.position_from_client_units(document.lines, params.position).character]
+        lines = document.lines
+        text = lines[number] if number < len(lines) else ""
+        column = document.position_codec.position_from_client_units(lines, params.position).character
+        before, after = text[:column], text[column:]
         index = _index(state, device) if device is not None else None
         present = set(device.objects) if device is not None else set()
-        items = completion.complete(index, before, number + 1, present)
+        items = completion.complete(index, before, number + 1, present, after)
         return types.CompletionList(is_incomplete=False, items=items)

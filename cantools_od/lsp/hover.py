@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from ..model import Device, Object, ObjectKind, Variable
+from ..eds.keys import COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, normalize
+from ..model import Commissioning, Device, DeviceInfo, FileInfo, Object, ObjectKind, Variable
 from ..model.cia301 import cia402, definitions
 from ..model.cia301.cobid import ALL_NODE_IDS, EXTENDED, RTR, VALID, Cob, known_node_id
 from ..model.cia301.connections import cob_entries, predefined_cob_base
@@ -70,11 +71,48 @@ def _rows(device: Device, var: Variable, owner: Object, node_id: int | None) -> 
     return rows
 
 
+def section_key(spot: Spot) -> str | None:
+    """A key of [FileInfo], [DeviceInfo] or [DeviceComissioning]: its CiA 306 spelling and the value as read."""
+    tables = {FileInfo: FILE_INFO_KEYS, DeviceInfo: DEVICE_INFO_KEYS, Commissioning: COMMISSIONING_KEYS}
+    table = tables.get(type(spot.section))
+    found = table.get(normalize(spot.key)) if table is not None and spot.key is not None else None
+    if found is None:
+        return None
+    spelling, field, _ = found
+    value: object = spot.section
+    for part in field.split("."):
+        value = value.get(int(part)) if isinstance(value, dict) else getattr(value, part, None)
+    lines = [f"**{spelling}** ({type(spot.section).__name__})", ""]
+    if spelling.startswith("BaudRate_"):
+        rate = spelling.removeprefix("BaudRate_")
+        said = {True: "supported", False: "not supported", None: "not given"}.get(value, f"{value}")  # type: ignore[call-overload]
+        return "\n".join([*lines, f"The bit rate {rate} kbit/s: {said}."])
+    return "\n".join([*lines, f"Read as {shown(value, None)}." if value is not None else "Not given."])
+
+
+def pdo_layout(device: Device, owner: Object) -> list[str] | None:
+    """A mapping object's PDO, bit by bit: each mapped object with its bits."""
+    found = next((pdo for pdo in pdos(device) if pdo.mapping is owner), None) if is_mapping(owner.index) else None
+    if found is None:
+        return None
+    rows = []
+    for entry in found.entries():
+        index, sub, bits = decode_entry(entry.raw)
+        target = device.objects.get(index)
+        mapped = target.entry(sub) if target is not None else None
+        name = "dummy" if is_dummy_index(index) else (mapped.name or target.name) if mapped and target else "?"
+        rows.append(f"| {entry.offset}-{entry.offset + bits - 1} | {index:04X}h sub{sub:X} | {name} |")
+    if not rows:
+        return [f"{found.name}: no object mapped."]
+    total = max(entry.offset + decode_entry(entry.raw)[2] for entry in found.entries())
+    return [f"{found.name}, {total} bits:", "", "| bits | object | name |", "|---|---|---|", *rows]
+
+
 def describe(device: Device, spot: Spot, node_id: int | None) -> str | None:
     """Markdown for the spot: the entry's decoded fields, then what its value means, when it means more."""
     owner, var = spot.owner, spot.var
     if owner is None or var is None:
-        return None
+        return section_key(spot)
     node = known_node_id(device, node_id)
     sub = "" if spot.subindex is None or not owner.has_subs else f" sub{spot.subindex:X}"
     title = f"**{owner.index:04X}h{sub}** {var.name or owner.name}"
@@ -87,6 +125,10 @@ def describe(device: Device, spot: Spot, node_id: int | None) -> str | None:
         extra = mapping_entry(device, owner, spot.subindex) or cob_id(device, owner, spot.subindex, node)
         if extra:
             lines += ["", *extra]
+    elif spot.key is None:
+        layout = pdo_layout(device, owner)
+        if layout:
+            lines += ["", *layout]
     return "\n".join(lines)
 
 

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import asyncio
-import logging
-import sys
+from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeVar
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
@@ -20,6 +19,8 @@ from .document import Analysis, Encoding, analyse, path_of
 from .incremental import reanalyse
 from .positions import Lines
 from .quick import quick_findings
+from .rpc import OdProtocol, is_parse_error, log_in_one_line, say
+from .text import faster
 
 DEBOUNCE = 0.1
 """Seconds of quiet after an edit before the document is read and linted again, when the edit follows another
@@ -28,9 +29,14 @@ within that time (a burst: typing, a paste in steps, an undo); an edit after a q
 
 @dataclass
 class Open:
-    """An open document: its encoding on disk, its last analysis and the re-check waiting to start."""
+    """An open document: its encoding on disk, its queue of work, its last analysis and the re-check waiting."""
 
     encoding: Encoding
+    worker: ThreadPoolExecutor = field(
+        default_factory=lambda: ThreadPoolExecutor(max_workers=1, thread_name_prefix="lint")
+    )
+    """This document's queue: checks, fixes, outline and formatting of one document run one after another,
+    beside (not behind) those of every other document."""
     analysis: Analysis | None = None
     lines: Lines | None = None
     pending: asyncio.TimerHandle | None = None
@@ -41,21 +47,45 @@ class Open:
     checks one after another, so an edit made while one runs is checked from its result)."""
     cache: dict[str, Any] = field(default_factory=dict)
     """What the features derive from the analysis (indexes of lines), dropped with it."""
+    whole: bool = False
+    """The next check reads the whole text (the settings changed: nothing of the last check is kept)."""
+    told: bool = False
+    """The user was shown once why a range is not formatted (format on paste would show it at every paste)."""
+
+    @staticmethod
+    def of(uri: str) -> Open:
+        return Open(Encoding.of_file(path_of(uri)))
+
+
+R = TypeVar("R")
 
 
 class OdServer(LanguageServer):
     def __init__(self) -> None:
-        super().__init__("cantools-od", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        super().__init__(
+            "cantools-od",
+            __version__,
+            text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
+            protocol_cls=OdProtocol,
+        )
         self.open: dict[str, Open] = {}
         self.options = LintOptions()
         self.rules_url: str | None = None
-        self.worker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="lint")
+        self.settings: dict[str, Any] = {}
+        self.resolves = False
+        """The client asks for a code action's edit when the user picks it (codeAction/resolve)."""
         self.tasks: set[asyncio.Task[None]] = set()
 
     def configure(self, settings: object) -> None:
-        """initializationOptions: {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "..."}."""
+        """initializationOptions or workspace/didChangeConfiguration's settings (those under "cantools-od" when
+        given so, as VS Code sends them): {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "..."};
+        a setting not given keeps its value."""
+        if isinstance(settings, dict) and isinstance(settings.get("cantools-od"), dict):
+            settings = settings["cantools-od"]
         if not isinstance(settings, dict):
             return
+        self.settings.update(settings)
+        settings = self.settings
         node_id = settings.get("nodeId")
         profile = settings.get("profile")
         self.options = LintOptions(
@@ -65,6 +95,25 @@ class OdServer(LanguageServer):
         )
         url = settings.get("rulesUrl")
         self.rules_url = url if isinstance(url, str) and url else None
+
+    def report_server_error(self, error: Exception, source: Any) -> None:
+        """An error outside a request: one line in the log, never a pop-up with a Python exception's name."""
+        if is_parse_error(error):  # pygls has logged it
+            assert isinstance(self.protocol, OdProtocol)
+            self.protocol.parse_error(error)
+            return
+        say(f"{type(error).__name__}: {error}")
+
+    def recheck_all(self) -> None:
+        """Check every open document again from its whole text (the settings changed)."""
+        for uri, state in self.open.items():
+            state.whole = True
+            self.schedule(uri, 0)
+
+    async def in_worker(self, uri: str, function: Callable[..., R], *args: Any) -> R:
+        """`function(*args)` in the document's queue; cancelled (not started) when the request is."""
+        state = self.open[uri]
+        return await asyncio.get_running_loop().run_in_executor(state.worker, function, *args)
 
     def text(self, uri: str) -> str:
         return self.workspace.get_text_document(uri).source
@@ -108,30 +157,38 @@ class OdServer(LanguageServer):
         document = self.workspace.get_text_document(uri)
         text, version = document.source, document.version
         analysis = await self.analysed(uri, state, text, version)
+        try:  # the lines of a large text take a while to find: not on the loop that answers every document
+            lines, found = await self.in_worker(uri, self._published, analysis, text)
+        except RuntimeError:  # closed meanwhile
+            return
         if self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
             return
-        state.analysis, state.lines, state.cache = analysis, Lines(text), {}
-        self.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri, diagnostics(analysis, state.lines, self.rules_url), version)
-        )
+        state.analysis, state.lines, state.cache = analysis, lines, {}
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found, version))
+
+    def _published(self, analysis: Analysis, text: str) -> tuple[Lines, list[types.Diagnostic]]:
+        lines = Lines(text)
+        return lines, diagnostics(analysis, lines, self.rules_url)
 
     async def analysed(self, uri: str, state: Open, text: str, version: int | None) -> Analysis:
         """The text read and linted in the worker: after an edit inside one object, only that object read
         again (incremental.py); otherwise the quick findings published first, then the whole text read."""
         loop = asyncio.get_running_loop()
-        if state.analysis is not None:
+        if state.whole:
+            state.whole, state.latest = False, None
+        elif state.analysis is not None:
             try:
-                found = await loop.run_in_executor(self.worker, self._reanalysed, uri, state, text, version)
+                found = await loop.run_in_executor(state.worker, self._reanalysed, uri, state, text, version)
             except Exception as error:  # the whole text read answers all the same
-                print(f"cantools-od lsp: {uri}: incremental check: {type(error).__name__}: {error}", file=sys.stderr)
+                say(f"{uri}: incremental check: {type(error).__name__}: {error}")
                 found = None
             if found is not None:
                 return found
             await self.publish_quick(uri, state.analysis, text, version)
         try:
-            return await loop.run_in_executor(self.worker, self._analysed, uri, state, text, version)
+            return await loop.run_in_executor(state.worker, self._analysed, uri, state, text, version)
         except Exception as error:  # a bug must not stop the server: say it in one line
-            print(f"cantools-od lsp: {uri}: {type(error).__name__}: {error}", file=sys.stderr)
+            say(f"{uri}: {type(error).__name__}: {error}")
             return Analysis(version, text, None, refusal=("LNT001", f"cannot check: {type(error).__name__}: {error}"))
 
     def _reanalysed(self, uri: str, state: Open, text: str, version: int | None) -> Analysis | None:
@@ -153,17 +210,27 @@ class OdServer(LanguageServer):
         state = self.open[uri]
         try:
             found = await asyncio.get_running_loop().run_in_executor(
-                self.worker, quick_findings, before, text, uri, state.encoding, self.options
+                state.worker, self._quick, uri, before, text, state.encoding
             )
         except Exception as error:  # the full check answers all the same
-            print(f"cantools-od lsp: {uri}: quick check: {type(error).__name__}: {error}", file=sys.stderr)
+            say(f"{uri}: quick check: {type(error).__name__}: {error}")
             return
         if found is None or self.open.get(uri) is not state or self.workspace.get_text_document(uri).version != version:
             return
-        quick = Analysis(None, text, None, found)
-        self.text_document_publish_diagnostics(
-            types.PublishDiagnosticsParams(uri, diagnostics(quick, Lines(text), self.rules_url))
-        )
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found))
+
+    def _quick(self, uri: str, before: Analysis, text: str, encoding: Encoding) -> list[types.Diagnostic] | None:
+        """In the worker: the quick findings as diagnostics."""
+        found = quick_findings(before, text, uri, encoding, self.options)
+        if found is None:
+            return None
+        return diagnostics(Analysis(None, text, None, found), Lines(text), self.rules_url)
+
+
+def _resolves(capabilities: types.ClientCapabilities) -> bool:
+    document = capabilities.text_document
+    support = document.code_action.resolve_support if document and document.code_action else None
+    return support is not None and "edit" in support.properties
 
 
 def build() -> OdServer:
@@ -171,12 +238,20 @@ def build() -> OdServer:
 
     @server.feature(types.INITIALIZE)
     def initialize(ls: OdServer, params: types.InitializeParams) -> None:
+        ls.resolves = _resolves(params.capabilities)
+        faster(ls.workspace)
         ls.configure(params.initialization_options)
+
+    @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
+    def did_change_configuration(ls: OdServer, params: types.DidChangeConfigurationParams) -> None:
+        ls.configure(params.settings)
+        ls.recheck_all()
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: OdServer, params: types.DidOpenTextDocumentParams) -> None:
         uri = params.text_document.uri
-        ls.open[uri] = Open(Encoding.of_file(path_of(uri)))
+        _closed(ls.open.pop(uri, None))
+        ls.open[uri] = Open.of(uri)
         ls.schedule(uri, 0)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
@@ -185,14 +260,17 @@ def build() -> OdServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
     def did_save(ls: OdServer, params: types.DidSaveTextDocumentParams) -> None:
-        ls.schedule(params.text_document.uri, 0)  # the configuration beside it may have changed
+        uri = params.text_document.uri
+        state = ls.open.get(uri)
+        encoding = Encoding.of_file(path_of(uri))
+        if state is not None and encoding != state.encoding:  # the file's bytes are the editor's now
+            state.encoding, state.whole = encoding, True
+        ls.schedule(uri, 0)  # the configuration beside it may have changed
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: OdServer, params: types.DidCloseTextDocumentParams) -> None:
         uri = params.text_document.uri
-        state = ls.open.pop(uri, None)
-        if state is not None and state.pending is not None:
-            state.pending.cancel()
+        _closed(ls.open.pop(uri, None))
         ls.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, []))
 
     from . import features
@@ -201,7 +279,15 @@ def build() -> OdServer:
     return server
 
 
+def _closed(state: Open | None) -> None:
+    if state is None:
+        return
+    if state.pending is not None:
+        state.pending.cancel()
+    state.worker.shutdown(wait=False, cancel_futures=True)
+
+
 def serve() -> None:
     """Serve on stdin/stdout until the client says exit."""
-    logging.basicConfig(level=logging.ERROR, stream=sys.stderr, format="cantools-od lsp: %(message)s")
+    log_in_one_line()
     build().start_io()

@@ -151,6 +151,44 @@ def test_the_neovim_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Pa
     assert {(n, code) for n, code in seen["after"]} == after
 
 
+_POM_LUA = r"""
+vim.wait(3000, function() return false end, 50)
+local file = io.open(vim.env.PROBE_OUT, "w")
+file:write(tostring(#(vim.lsp.get_clients or vim.lsp.get_active_clients)({ bufnr = 0 })))
+file:close()
+vim.cmd("qa!")
+"""
+
+
+def test_the_neovim_snippet_leaves_other_xml_files_alone(tmp_path: Path) -> None:
+    """A Maven pom.xml is XML too: the server would say it is no device description (XDD004)."""
+    nvim = shutil.which("nvim")
+    if nvim is None:
+        pytest.skip("Neovim (nvim) is not installed on this machine")
+    version = _nvim_version(nvim)
+    if version < (0, 7):
+        pytest.skip(f"Neovim {version[0]}.{version[1]} predates every snippet in the README (0.7 or newer)")
+    modern, older = _snippets("lua", "**Neovim**")
+    (tmp_path / "init.lua").write_text(modern if version >= (0, 8) else older, encoding="utf-8")
+    (tmp_path / "probe.lua").write_text(_POM_LUA, encoding="utf-8")
+    (tmp_path / "pom.xml").write_text('<?xml version="1.0"?>\n<project><modelVersion>4.0.0</modelVersion></project>\n')
+    out = tmp_path / "clients.txt"
+    command = [nvim, "--headless", "--clean", "-u", "init.lua", "pom.xml", "-c", "luafile probe.lua"]
+    subprocess.run(command, cwd=tmp_path, env=_environment(tmp_path, PROBE_OUT=str(out)), capture_output=True,
+                   timeout=WAIT + 30)  # fmt: skip
+    assert out.read_text(encoding="utf-8") == "0"
+
+
+def test_the_vscode_build_line_runs_where_npx_cannot_ask() -> None:
+    """Outside a terminal (a task, a script, CI) npx cannot ask whether to fetch vsce, and stops: the
+    README's line says yes beforehand."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    found = re.search(r"\*\*VS Code\*\*.*?Build and install it with `([^`]+)`", readme, re.DOTALL)
+    assert found is not None, "the README has no build line for VS Code"
+    calls = re.findall(r"npx(?: +(\S+))?", found.group(1))
+    assert calls and all(flag in ("--yes", "-y") for flag in calls), found.group(1)
+
+
 def _eglot_installed(emacs: str, home: Path) -> bool:
     """Whether eglot loads in a plain start-up (built in from 29, an ELPA package before)."""
     probe = '(progn (package-initialize) (princ (if (locate-library "eglot") "yes" "no")))'

@@ -15,8 +15,11 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
     ],
     initializationOptions: {
       nodeId: settings.get<number | null>("nodeId", null),
+      canFd: settings.get<boolean>("canFd", false),
       profile: settings.get<string | null>("profile", null),
     },
+    // A changed setting reaches the server (workspace/didChangeConfiguration), which checks every file again.
+    synchronize: { configurationSection: "cantools-od" },
   };
   client = new LanguageClient("cantools-od", "cantools-od", server, options);
   context.subscriptions.push(client);

@@ -85,7 +85,7 @@ def cases(tmp_path_factory: pytest.TempPathFactory) -> list[Case]:
 def _fmt(case: Case, text: str) -> str:
     """`fmt` of a text as the command formats it (the same reading and writing, in this process)."""
     device = loads(Encoding.of_file(case.path).bytes(text), source=str(case.path))
-    return dumps(device, format_for(case.path), style="canonical").decode("utf-8")
+    return decode_as(dumps(device, format_for(case.path), style="canonical"))[0]  # in the code page fmt keeps
 
 
 def _sections_around(lines: list[str], first: int, last: int) -> tuple[int, int]:

@@ -54,6 +54,21 @@ class _StartUp:
             collector.resume()
 
 
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report a program Ctrl-C ended
+
+
+class Interrupted(BaseException):
+    """Ctrl-C while a command ran."""
+
+
+def _interrupted() -> NoReturn:
+    """One line and exit 130; on a terminal the line starts below the `^C` the terminal echoed."""
+    with contextlib.suppress(OSError, ValueError):
+        start = "\n" if sys.stderr.isatty() else ""
+        print(f"{start}cantools-od: interrupted", file=sys.stderr, flush=True)
+    sys.exit(EXIT_INTERRUPTED)
+
+
 class LazyGroup(click.Group):
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(COMMANDS)
@@ -78,6 +93,9 @@ class LazyGroup(click.Group):
         **extra: Any,
     ) -> Any:
         """As click's, but a usage error is one line (`cantools-od CMD: error: REASON`), exit 2."""
+        from ..files import record_reads
+
+        record_reads()  # every file the command reads from now on is an input no output may replace
         _StartUp.pause()
         try:
             return self._main(args, prog_name, complete_var, standalone_mode, **extra)
@@ -107,10 +125,17 @@ class LazyGroup(click.Group):
         except click.ClickException as error:
             error.show()
             sys.exit(error.exit_code)
-        except click.Abort:
-            click.echo("Aborted!", err=True)
-            sys.exit(1)
+        except (Interrupted, click.Abort):  # Ctrl-C (click turns one while it parses into Abort)
+            _interrupted()
         sys.exit(result if isinstance(result, int) else 0)
+
+    def invoke(self, ctx: click.Context) -> Any:
+        """As click's, but Ctrl-C leaves as `Interrupted`, which click does not catch: it would print a blank line
+        and "Aborted!" and exit 1, the code of findings."""
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:
+            raise Interrupted from None
 
     def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
         rows = [(name, COMMANDS[name][1]) for name in self.list_commands(ctx)]

@@ -4,6 +4,7 @@ and each file's configuration found from its own folder (`--config` overrides it
 from __future__ import annotations
 
 import os
+import signal
 from collections.abc import Callable, Sequence
 from functools import cache
 from pathlib import Path
@@ -79,7 +80,7 @@ def _in_processes(
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     ended: dict[int, Result] = {}
-    with ProcessPoolExecutor(max_workers=workers) as pool:
+    with ProcessPoolExecutor(max_workers=workers, initializer=_quiet_on_interrupt) as pool:
         futures = {
             pool.submit(_each, work, [items[i] for i in batch]): batch for batch in _batches(len(items), workers, costs)
         }
@@ -107,6 +108,16 @@ def _batches(count: int, workers: int, costs: list[int] | None) -> list[list[int
             batches.append(batch)
             batch, held = [], 0
     return [*batches, batch] if batch else batches
+
+
+def _quiet_on_interrupt() -> None:
+    """In a worker: Ctrl-C (sent to every process of the terminal's group) ends it without a traceback of its own;
+    the command says it was interrupted. A write under way still removes its temporary file (files.write_all)."""
+    signal.signal(signal.SIGINT, _leave_quietly)
+
+
+def _leave_quietly(signum: int, frame: object) -> None:
+    raise SystemExit(130)
 
 
 def _each(work: Callable[[Item], Result], batch: list[Item]) -> list[Result]:

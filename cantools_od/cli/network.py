@@ -10,12 +10,36 @@ from typing import TYPE_CHECKING
 import click
 
 from ..model import Severity
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, errors_to_fix, report, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Output, errors_to_fix, force_option, report, write_outputs
 
 if TYPE_CHECKING:
+    from ..files import Content
     from ..model import Device
     from ..network.model import Network
     from ..network.plan import NetworkPlan
+
+
+def configuration_file(path: Path) -> bool:
+    """Whether a file in the output folder is one `network` (or lely's dcfgen) makes, to be replaced by the new one.
+
+    Their formats carry no banner: master.dcf is byte for byte what dcfgen writes, and a concise DCF is binary. So
+    a DCF (a [DeviceComissioning] section near its top) and a concise DCF (exactly the writes its count announces)
+    are taken as made by a generator; any other file is refused (see docs/outputs.md)."""
+    from ..files import has_banner
+    from ..model.cia301.master import NotConcise, read_concise_dcf
+
+    try:
+        data = path.read_bytes()
+    except OSError:
+        return False
+    if path.suffix.lower() == ".bin":
+        try:
+            read_concise_dcf(data)
+        except NotConcise:
+            return False
+        return True
+    head = data[: 64 * 1024].lower()
+    return b"[devicecomissioning]" in head or b"[devicecommissioning]" in head or has_banner(path)
 
 
 def _defines(values: tuple[str, ...]) -> dict[str, str]:
@@ -85,7 +109,7 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
 @click.command(name="network")
 @click.argument("bus", type=click.Path(dir_okay=False))
 @click.option(
-    "-o", "--output", "outdir", type=click.Path(file_okay=False), help="Write master.dcf, <node>.bin, <node>.dcf here."
+    "-o", "--output", "outdir", type=Output(file_okay=False), help="Write master.dcf, <node>.bin, <node>.dcf here."
 )
 @click.option(
     "--define", "defines", multiple=True, metavar="NAME=VALUE", help="Value of an @NAME@ placeholder (repeatable)."
@@ -107,9 +131,10 @@ def make_plan(network: Network, devices: dict[str, Device], parameter_values: bo
 @click.option(
     "--threshold", type=click.FloatRange(1, 100), default=70.0, show_default=True, help="Warn above this load (%)."
 )
-@click.option("--dbc", type=click.Path(dir_okay=False), help="Write every PDO of the network as a DBC file.")
+@click.option("--dbc", type=Output(dir_okay=False), help="Write every PDO of the network as a DBC file.")
 @click.option("--keep-going", is_flag=True, help="Go on despite errors in reading the nodes' files (printed).")
 @click.option("--check/--no-check", default=True, show_default=True, help="Refuse a network the checks find errors in.")
+@force_option
 def command(
     bus: str,
     outdir: str | None,
@@ -124,11 +149,13 @@ def command(
     dbc: str | None,
     keep_going: bool,
     check: bool,
+    force: bool,
 ) -> None:
     """Turn the bus description BUS (lely dcfgen's bus.yml, ros2_canopen's included) into the master's
     configuration: master.dcf, one concise DCF (<node>.bin, CiA 302-3) per slave the master
-    configures at boot, and one DCF per node. All files or none. Exit 0, 1 with load above the
-    threshold or network errors, 2 when BUS cannot be turned into a network."""
+    configures at boot, and one DCF per node. All files or none; never over a file the command reads,
+    nor over a file in OUTDIR that is no DCF or concise DCF (unless --force). Exit 0, 1 with load above the
+    threshold or network errors, 2 when BUS cannot be turned into a network or an output is refused."""
     if outdir is None and not show_load and dbc is None:
         click.echo(
             "cantools-od network: error: nothing to do: give -o OUTDIR, --load or --dbc FILE (see --help)", err=True
@@ -147,17 +174,19 @@ def command(
         if failed:
             click.echo(f"{bus}: error: the network has errors: nothing written (--no-check writes anyway)", err=True)
             sys.exit(EXIT_FINDINGS)
-    files: dict[Path, bytes] = {}
+    files: list[tuple[Path, Content]] = []
     if outdir is not None:
+        from ..files import Generated
         from ..network.outputs import outputs
 
-        files.update(outputs(plan, Path(outdir), node_dcfs=not no_node_dcf, remote_pdo=remote_pdo))
+        made = outputs(plan, Path(outdir), node_dcfs=not no_node_dcf, remote_pdo=remote_pdo)
+        files.extend(Generated(path, data) for path, data in made.items())
     if dbc is not None:
         from ..network.dbc import network_dbc
 
-        files[Path(dbc)] = network_dbc(plan)
+        files.append((Path(dbc), network_dbc(plan)))
     if files:
-        write_outputs(files)
+        write_outputs(files, force=force, ours=configuration_file)
     if show_load:
         from ..network.load import bus_load, format_load
 

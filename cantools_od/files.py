@@ -6,10 +6,10 @@ file the mode `0666 & ~umask` like any other tool, and leaves a file whose conte
 right untouched. A symbolic link is written through: its target gets the new content and the
 link stays a link. A set of outputs is written all or nothing.
 
-Before anything of a set is written, its `Guard` refuses (see docs/outputs.md): an output that is a file the
-command read (by name, link or inode), unless it rewrites that file by design; two outputs that are one file; a
-file whose mode forbids writing it; and a file in a folder the command fills whose name the command chose
-(`Generated`) that it did not make itself.
+Before any file of a set is replaced, its `Guard` refuses (see docs/outputs.md): an output that is a file the
+command read (by name, link or inode), unless it rewrites that file by design; two outputs that are one file; and
+where the content changes, a file whose mode forbids writing it, and a file in a folder the command fills whose
+name the command chose (`Generated`) that it did not make itself.
 """
 
 from __future__ import annotations
@@ -43,6 +43,8 @@ Content = bytes | Iterable[bytes]
 class _Pending:
     path: Path  # as the caller named it, for messages
     target: Path  # the file that is replaced: `path`, or what its symbolic link points to
+    guard: Guard
+    generated: bool  # a `Generated` output
     temp: Path | None = None
 
 
@@ -77,8 +79,8 @@ class Guard:
     rewrites: Collection[Path] = ()  # inputs the command replaces by design (fmt, lint --fix, ids' pin file)
     ours: Callable[[Path], bool] | None = has_banner  # whether an existing `Generated` output is ours; None: --force
 
-    def check(self, path: Path, generated: bool, earlier: dict[object, Path]) -> None:
-        """Raise CannotWrite when `path` must not be written; `earlier`: the set's outputs checked before it."""
+    def check(self, path: Path, earlier: dict[object, Path]) -> None:
+        """Raise CannotWrite when `path` must not be written at all; `earlier`: the set's outputs checked before it."""
         target = _target(path)
         if target.is_dir():
             raise CannotWrite(path, "it is a folder")
@@ -90,8 +92,10 @@ class Guard:
         except OSError:
             existing = None  # a new file: whether it can be made, the write finds out
         _check_unique(path, target, existing, earlier)
-        if existing is None:
-            return
+
+    def may_replace(self, path: Path, target: Path, existing: os.stat_result, generated: bool) -> None:
+        """Raise CannotWrite when the existing file `target` must not be replaced by new content (a file that
+        already holds the content is left as it is, whatever its mode or maker)."""
         if _mode_forbids_writing(existing):
             mode = stat.S_IMODE(existing.st_mode)
             raise CannotWrite(path, f"Permission denied (its mode {mode:04o} forbids writing it); nothing written")
@@ -178,6 +182,12 @@ def record_reads() -> None:
     _reads.clear()
 
 
+def note_inputs(paths: Iterable[str | os.PathLike[str]]) -> None:
+    """Count `paths` among the inputs as if they had been read: files the command line names for reading."""
+    for path in paths:
+        _reads[os.path.abspath(os.fspath(path))] = None
+
+
 def reads() -> list[str]:
     """The files opened for reading since `record_reads`, as absolute paths."""
     return list(_reads)
@@ -212,21 +222,23 @@ def write_if_changed(path: str | os.PathLike[str], data: Content) -> bool:
 def write_all(outputs: Iterable[tuple[Path, Content]], guard: Guard) -> list[Path]:
     """Write every output whose content changes, or none of them; the paths written.
 
-    The guard checks every output before anything is written (content is not produced for that).
-    Outputs are then taken one at a time, and chunked content is compared with the file it replaces as
-    it comes, so that a set of large outputs never has to be held in memory. Every temporary file
-    is written and flushed before the first one is renamed, so a full disk, a read-only folder, a
-    path that is a folder or a failure while producing content leaves every target as it was and
-    no temporary file behind. Raises CannotWrite naming the first output that failed."""
+    The guard checks every output before anything is written (content is not produced for that), and each
+    file whose content changes before its temporary file is made. Outputs are taken one at a time, and
+    chunked content is compared with the file it replaces as it comes, so that a set of large outputs
+    never has to be held in memory. Every temporary file is written and flushed before the first one is
+    renamed, so a refusal, a full disk, a read-only folder, a path that is a folder or a failure while
+    producing content leaves every target as it was and no temporary file behind. Raises CannotWrite
+    naming the first output that failed."""
     planned = list(outputs)
     earlier: dict[object, Path] = {}
-    for output in planned:
-        guard.check(output[0], isinstance(output, Generated), earlier)
+    for path, _ in planned:
+        guard.check(path, earlier)
     started: list[_Pending] = []
     created: list[Path] = []  # folders made for the outputs, removed again when the set fails
     try:
-        for path, content in planned:
-            item = _Pending(path, _target(path))
+        for output in planned:
+            path, content = output
+            item = _Pending(path, _target(path), guard, isinstance(output, Generated))
             started.append(item)
             if not _write_temp_if_changed(item, content, created):
                 started.pop()
@@ -360,6 +372,8 @@ def _open_temp(item: _Pending, created: list[Path]) -> BinaryIO:
         existing = None
     except OSError as error:
         raise CannotWrite(item.path, _reason(error, item.path)) from None
+    if existing is not None:
+        item.guard.may_replace(item.path, target, existing, item.generated)
     try:
         temp, fd = _create_temp(target)
     except OSError as error:

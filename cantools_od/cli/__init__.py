@@ -6,6 +6,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import errno
+import functools
 import importlib
 import os
 import sys
@@ -69,6 +70,29 @@ def _interrupted() -> NoReturn:
     sys.exit(EXIT_INTERRUPTED)
 
 
+def _note_named_inputs(command: click.Command) -> None:
+    """Every path the command line gives a command to read is an input no output may replace, read or not (a
+    `--stack-config` that only `-t canopennode` reads): its callback notes them first (see files.py)."""
+    from .common import Output
+
+    callback = command.callback
+    if callback is None or getattr(callback, "notes_inputs", False):
+        return
+    named = [p.name for p in command.params if isinstance(p.type, click.Path) and not isinstance(p.type, Output)]
+
+    @functools.wraps(callback)
+    def noting(**params: Any) -> Any:
+        from ..files import note_inputs
+
+        for name in named:
+            value = params.get(name)
+            note_inputs([value] if isinstance(value, str) else value or [])
+        return callback(**params)
+
+    noting.notes_inputs = True  # type: ignore[attr-defined]
+    command.callback = noting
+
+
 class LazyGroup(click.Group):
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(COMMANDS)
@@ -82,6 +106,7 @@ class LazyGroup(click.Group):
         finally:
             _StartUp.end()
         command: click.Command = module.command
+        _note_named_inputs(command)
         return command
 
     def main(

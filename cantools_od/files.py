@@ -22,6 +22,7 @@ import stat
 import sys
 from collections.abc import Callable, Collection, Iterable
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 from typing import BinaryIO, NamedTuple
 
@@ -106,21 +107,38 @@ class Guard:
 
     def _input_at(self, target: Path) -> str | None:
         """The input `target` is (same real path, or same device and inode), None when none; rewrites excepted."""
-        allowed = {os.path.realpath(p) for p in self.rewrites}
         real = os.path.realpath(target)
-        if real in allowed:
+        if real in self._exempt:
             return None
+        by_path, by_inode = self._inputs
+        if real in by_path:
+            return by_path[real]
         try:
             mine = os.stat(real)
         except OSError:
-            mine = None
+            return None
+        return by_inode.get((mine.st_dev, mine.st_ino))
+
+    @cached_property
+    def _exempt(self) -> set[str]:
+        return {os.path.realpath(p) for p in self.rewrites}
+
+    @cached_property
+    def _inputs(self) -> tuple[dict[str, str], dict[tuple[int, int], str]]:
+        """The inputs by real path and by (device, inode), each as the user would name it; once per set."""
+        by_path: dict[str, str] = {}
+        by_inode: dict[tuple[int, int], str] = {}
         for name in self.inputs:
-            theirs = os.path.realpath(name)
-            if theirs in allowed:
+            real = os.path.realpath(name)
+            if real in self._exempt:
                 continue
-            if theirs == real or (mine is not None and _same_file(name, mine)):
-                return _shown(name)
-        return None
+            by_path.setdefault(real, _shown(name))
+            try:
+                found = os.stat(real)
+            except OSError:
+                continue
+            by_inode.setdefault((found.st_dev, found.st_ino), _shown(name))
+        return by_path, by_inode
 
 
 def _check_unique(path: Path, target: Path, existing: os.stat_result | None, earlier: dict[object, Path]) -> None:
@@ -132,14 +150,6 @@ def _check_unique(path: Path, target: Path, existing: os.stat_result | None, ear
         if key in earlier:
             raise CannotWrite(path, f"it is the same file as {earlier[key]}, another output; nothing written")
     earlier.update(dict.fromkeys(keys, path))
-
-
-def _same_file(name: str, mine: os.stat_result) -> bool:
-    try:
-        theirs = os.stat(name)
-    except OSError:
-        return False
-    return (theirs.st_dev, theirs.st_ino) == (mine.st_dev, mine.st_ino)
 
 
 def _shown(name: str) -> str:

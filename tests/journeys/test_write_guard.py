@@ -125,7 +125,8 @@ def test_a_read_only_file_is_not_replaced(tmp_path: Path, args: list[str]) -> No
     root, whom no permission stops). As ruff and black: one line, exit 2."""
     project(tmp_path)
     source = tmp_path / "ro.eds"
-    source.write_bytes((tmp_path / ("emcy.eds" if "--fix" in args else "unformatted.eds")).read_bytes())
+    held = {"fmt": "unformatted.eds", "lint": "emcy.eds", "convert": "drive.eds"}[args[0]]  # what would change
+    source.write_bytes((tmp_path / held).read_bytes())
     source.chmod(0o444)
     before = state(tmp_path)
     ran = run(*args, cwd=tmp_path)

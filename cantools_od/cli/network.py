@@ -25,6 +25,7 @@ def configuration_file(path: Path) -> bool:
     Their formats carry no banner: master.dcf is byte for byte what dcfgen writes, and a concise DCF is binary. So
     a DCF (a [DeviceComissioning] section near its top) and a concise DCF (exactly the writes its count announces)
     are taken as made by a generator; any other file is refused (see docs/outputs.md)."""
+    from ..eds.keys import COMMISSIONING_SPELLINGS
     from ..files import has_banner
     from ..model.cia301.master import NotConcise, read_concise_dcf
 
@@ -39,7 +40,7 @@ def configuration_file(path: Path) -> bool:
             return False
         return True
     head = data[: 64 * 1024].lower()
-    return b"[devicecomissioning]" in head or b"[devicecommissioning]" in head or has_banner(path)
+    return any(f"[{name}]".encode() in head for name in COMMISSIONING_SPELLINGS) or has_banner(path)
 
 
 def _defines(values: tuple[str, ...]) -> dict[str, str]:

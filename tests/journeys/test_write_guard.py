@@ -85,6 +85,19 @@ def test_gen_replaces_only_what_it_generated(tmp_path: Path) -> None:
     assert run(*GEN_C, cwd=tmp_path).returncode == 0 and (tmp_path / "drive.c").read_bytes() == generated
 
 
+def test_read_only_outputs_that_would_not_change_are_left_alone(tmp_path: Path) -> None:
+    """A generated folder checked in read-only (as Perforce keeps files until opened for edit) regenerates without
+    a word when nothing changed: only a file whose content changes is refused for its mode."""
+    project(tmp_path)
+    assert run(*GEN_C, cwd=tmp_path).returncode == 0
+    for name in ("drive.c", "drive.h"):
+        (tmp_path / name).chmod(0o444)
+    before = state(tmp_path)
+    ran = run(*GEN_C, cwd=tmp_path)
+    assert (ran.returncode, ran.stderr) == (0, ""), ran
+    assert state(tmp_path) == before
+
+
 def test_every_generated_text_file_carries_the_banner(tmp_path: Path) -> None:
     """What gen writes into a folder, a later run recognises as its own: regenerating needs no --force."""
     project(tmp_path)

@@ -208,13 +208,19 @@ def _on_open(event: str, args: tuple[object, ...]) -> None:
         return
     try:
         path, mode, flags = args
-        if not isinstance(path, str | bytes | os.PathLike):
+        if isinstance(path, str):
+            name = path
+        elif isinstance(path, bytes | os.PathLike):
+            name = os.fsdecode(path)
+        else:
             return  # a file descriptor
+        if name.startswith(_OWN_FILES):  # the modules Python imports, by absolute path: most of the opens
+            return
         if isinstance(mode, str) and any(c in mode for c in "wax+"):
             return
         if mode is None and isinstance(flags, int) and flags & (os.O_WRONLY | os.O_RDWR):
             return
-        name = os.path.abspath(os.fsdecode(path))
+        name = os.path.abspath(name)
         if not name.startswith(_OWN_FILES):
             _reads[name] = None
     except Exception:  # an audit hook that raises would break the open it watches

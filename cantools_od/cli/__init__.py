@@ -171,7 +171,10 @@ class LazyGroup(click.Group):
 @click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "--version", prog_name="cantools-od")
 def main() -> None:
-    """Read, check and generate code from CANopen object dictionaries."""
+    """Read, check and generate code from CANopen object dictionaries.
+
+    Exit codes: 0 ok, 1 findings, 2 usage error, unreadable input or an output refused or not written
+    (docs/outputs.md), 130 interrupted (Ctrl-C)."""
 
 
 def run() -> NoReturn:

@@ -15,7 +15,7 @@ import pytest
 from kit import run
 from writekit import HAND_WRITTEN, UNFORMATTED, project, state
 
-from support import cli_command
+from support import ROOT, cli_command
 
 GEN_C = ["gen", "drive.eds", "-t", "c", "-o", "."]
 
@@ -260,3 +260,8 @@ def test_ctrl_c_exits_130_in_one_line(tmp_path: Path, command: str) -> None:
     _, err = started.communicate(timeout=60)
     assert (started.returncode, err) == (130, "cantools-od: interrupted\n")
     assert not list(tmp_path.glob("**/*.tmp"))
+
+
+def test_help_and_readme_give_the_interrupted_code(tmp_path: Path) -> None:
+    assert "130 interrupted (Ctrl-C)" in " ".join(run("--help", cwd=tmp_path).stdout.split())
+    assert "`130` interrupted" in (ROOT / "README.md").read_text(encoding="utf-8")

@@ -12,7 +12,7 @@ import time
 from pathlib import Path
 
 import pytest
-from kit import run
+from kit import non_writer, open_folder, run
 from writekit import HAND_WRITTEN, UNFORMATTED, project, state
 
 from support import ROOT, cli_command
@@ -210,6 +210,25 @@ def _reported(fmt: str, out: str) -> set[tuple[str, str, str]]:
         elif fmt == "text" and line.endswith("]"):
             found.add((line.split(":")[0], line.rpartition(" [")[2][:-1], ""))
     return found
+
+
+def test_an_unreadable_file_does_not_stop_the_batch() -> None:
+    """Why: a file the user may not read stopped `lint *` and `fmt --check *` as a usage error, nothing checked."""
+    user = non_writer()
+    with open_folder() as folder:
+        project(folder)
+        (folder / "secret.eds").write_bytes(UNFORMATTED)
+        (folder / "secret.eds").chmod(0o600 if user else 0o000)  # root's file: nobody else may read it
+        linted = run("lint", "secret.eds", "emcy.eds", cwd=folder, user=user)
+        assert linted.returncode == 2 and linted.stderr == "", linted
+        assert "secret.eds:1:1: error: cannot read: Permission denied [EDS000]" in linted.stdout.splitlines(), linted
+        assert "emcy.eds:" in linted.stdout and linted.stdout.splitlines()[-1].startswith("1 file checked, 1 not read")
+        checked = run("fmt", "--check", "secret.eds", "unformatted.eds", cwd=folder, user=user)
+        assert checked.returncode == 2, checked
+        assert checked.stderr.splitlines() == [
+            "secret.eds: error: cannot read: Permission denied",
+            "would reformat unformatted.eds",
+        ], checked
 
 
 def test_fmt_check_reports_what_it_cannot_read_and_checks_the_rest(tmp_path: Path) -> None:

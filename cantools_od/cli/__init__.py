@@ -183,6 +183,8 @@ def run() -> NoReturn:
         main(prog_name="cantools-od")
     except SystemExit as end:
         code = end.code
+    except KeyboardInterrupt:  # Ctrl-C before or after click ran the command
+        _interrupted()
     except OSError as error:
         if error.filename is not None or error.errno not in _OUTPUT_FAILED:
             raise

@@ -4,11 +4,13 @@ bad argument, and Ctrl-C that exited 1 (the code of findings)."""
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import signal
 import subprocess
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -258,6 +260,30 @@ INTERRUPTED = {
 }
 
 
+@contextlib.contextmanager
+def _waiting_reader(fifo: Path | None) -> Iterator[None]:
+    """Returns once the command has the pipe open for reading (it then waits for data), and keeps the pipe's
+    writing end open meanwhile (its closing would end the command's wait); without a pipe (lsp reads stdin), after
+    a while."""
+    if fifo is None:
+        time.sleep(3)
+        yield
+        return
+    deadline = time.monotonic() + 60
+    while True:
+        try:
+            writer = os.open(fifo, os.O_WRONLY | os.O_NONBLOCK)  # ENXIO while nobody reads it
+            break
+        except OSError:
+            assert time.monotonic() < deadline, f"nothing opened {fifo.name} to read it"
+            time.sleep(0.05)
+    try:
+        time.sleep(0.2)  # from opening to reading
+        yield
+    finally:
+        os.close(writer)
+
+
 @pytest.mark.parametrize("command", sorted(INTERRUPTED))
 def test_ctrl_c_exits_130_in_one_line(tmp_path: Path, command: str) -> None:
     """Why: Ctrl-C printed "Aborted!" and exited 1, the code of findings: a CI step or a script took an
@@ -274,8 +300,9 @@ def test_ctrl_c_exits_130_in_one_line(tmp_path: Path, command: str) -> None:
         start_new_session=True,  # its own process group: Ctrl-C reaches it and its workers, as in a terminal
         text=True,
     )
-    time.sleep(2)  # started, and waiting
-    os.killpg(started.pid, signal.SIGINT)
+    fifo = next((tmp_path / arg for arg in INTERRUPTED[command] if arg.startswith("fifo.")), None)
+    with _waiting_reader(fifo):
+        os.killpg(started.pid, signal.SIGINT)
     _, err = started.communicate(timeout=60)
     assert (started.returncode, err) == (130, "cantools-od: interrupted\n")
     assert not list(tmp_path.glob("**/*.tmp"))

@@ -6,6 +6,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import errno
+import functools
 import importlib
 import os
 import sys
@@ -56,6 +57,44 @@ class _StartUp:
             collector.resume()
 
 
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report a program Ctrl-C ended
+
+
+class Interrupted(BaseException):
+    """Ctrl-C while a command ran."""
+
+
+def _interrupted() -> NoReturn:
+    """One line and exit 130; on a terminal the line starts below the `^C` the terminal echoed."""
+    with contextlib.suppress(OSError, ValueError):
+        start = "\n" if sys.stderr.isatty() else ""
+        print(f"{start}cantools-od: interrupted", file=sys.stderr, flush=True)
+    sys.exit(EXIT_INTERRUPTED)
+
+
+def _note_named_inputs(command: click.Command) -> None:
+    """Every path the command line gives a command to read is an input no output may replace, read or not (a
+    `--stack-config` that only `-t canopennode` reads): its callback notes them first (see files.py)."""
+    from .common import Output
+
+    callback = command.callback
+    if callback is None or getattr(callback, "notes_inputs", False):
+        return
+    named = [p.name for p in command.params if isinstance(p.type, click.Path) and not isinstance(p.type, Output)]
+
+    @functools.wraps(callback)
+    def noting(**params: Any) -> Any:
+        from ..files import note_inputs
+
+        for name in named:
+            value = params.get(name)
+            note_inputs([value] if isinstance(value, str) else value or [])
+        return callback(**params)
+
+    noting.notes_inputs = True  # type: ignore[attr-defined]
+    command.callback = noting
+
+
 class LazyGroup(click.Group):
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(COMMANDS)
@@ -69,6 +108,7 @@ class LazyGroup(click.Group):
         finally:
             _StartUp.end()
         command: click.Command = module.command
+        _note_named_inputs(command)
         return command
 
     def main(
@@ -80,6 +120,9 @@ class LazyGroup(click.Group):
         **extra: Any,
     ) -> Any:
         """As click's, but a usage error is one line (`cantools-od CMD: error: REASON`), exit 2."""
+        from ..files import record_reads
+
+        record_reads()  # every file the command reads from now on is an input no output may replace
         _StartUp.pause()
         try:
             return self._main(args, prog_name, complete_var, standalone_mode, **extra)
@@ -109,10 +152,17 @@ class LazyGroup(click.Group):
         except click.ClickException as error:
             error.show()
             sys.exit(error.exit_code)
-        except click.Abort:
-            click.echo("Aborted!", err=True)
-            sys.exit(1)
+        except (Interrupted, click.Abort):  # Ctrl-C (click turns one while it parses into Abort)
+            _interrupted()
         sys.exit(result if isinstance(result, int) else 0)
+
+    def invoke(self, ctx: click.Context) -> Any:
+        """As click's, but Ctrl-C leaves as `Interrupted`, which click does not catch: it would print a blank line
+        and "Aborted!" and exit 1, the code of findings."""
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:
+            raise Interrupted from None
 
     def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
         rows = [(name, COMMANDS[name][1]) for name in self.list_commands(ctx)]
@@ -123,7 +173,10 @@ class LazyGroup(click.Group):
 @click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "--version", prog_name="cantools-od")
 def main() -> None:
-    """Read, check and generate code from CANopen object dictionaries."""
+    """Read, check and generate code from CANopen object dictionaries.
+
+    Exit codes: 0 ok, 1 findings, 2 usage error, unreadable input or an output refused or not written
+    (docs/outputs.md), 130 interrupted (Ctrl-C)."""
 
 
 def run() -> NoReturn:
@@ -132,6 +185,8 @@ def run() -> NoReturn:
         main(prog_name="cantools-od")
     except SystemExit as end:
         code = end.code
+    except KeyboardInterrupt:  # Ctrl-C before or after click ran the command
+        _interrupted()
     except OSError as error:
         if error.filename is not None or error.errno not in _OUTPUT_FAILED:
             raise

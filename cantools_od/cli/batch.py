@@ -4,7 +4,9 @@ and each file's configuration found from its own folder (`--config` overrides it
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Sequence
+import signal
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from functools import cache
 from pathlib import Path
 from typing import TypeVar
@@ -79,14 +81,24 @@ def _in_processes(
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     ended: dict[int, Result] = {}
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        futures = {
-            pool.submit(_each, work, [items[i] for i in batch]): batch for batch in _batches(len(items), workers, costs)
-        }
-        for future in as_completed(futures):
-            for index, result in zip(futures[future], future.result(), strict=True):
-                ended[index] = result
-                _step(progress, items[index])
+    with ProcessPoolExecutor(max_workers=workers, initializer=_quiet_on_interrupt) as pool:
+        with _interrupts_held():  # the workers start (at the first submits) with Ctrl-C held back
+            futures = {
+                pool.submit(_each, work, [items[i] for i in batch]): batch
+                for batch in _batches(len(items), workers, costs)
+            }
+        try:
+            for future in as_completed(futures):
+                try:
+                    done = future.result()
+                except WorkerInterrupted:  # the worker's Ctrl-C came back before this process's own
+                    raise KeyboardInterrupt from None
+                for index, result in zip(futures[future], done, strict=True):
+                    ended[index] = result
+                    _step(progress, items[index])
+        except BaseException:  # Ctrl-C, or a failure: the batches not yet started are not started
+            pool.shutdown(wait=False, cancel_futures=True)
+            raise
     return [ended[i] for i in range(len(items))]
 
 
@@ -109,9 +121,46 @@ def _batches(count: int, workers: int, costs: list[int] | None) -> list[list[int
     return [*batches, batch] if batch else batches
 
 
+@contextmanager
+def _interrupts_held() -> Iterator[None]:
+    """Ctrl-C held back from this thread, and from the processes it starts meanwhile, until the end; one that came
+    meanwhile arrives then."""
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+
+
+class WorkerInterrupted(BaseException):
+    """Ctrl-C reached a worker while it worked: sent back as its batch's result (a BaseException, so that no
+    `except Exception` of the work swallows it); the command then ends as interrupted."""
+
+
+def _quiet_on_interrupt() -> None:
+    """In a worker, which starts with Ctrl-C held back: Ctrl-C (sent to every process of the terminal's group) is
+    let through only while it works, and then ends the batch as WorkerInterrupted, without a traceback of its own.
+    Held back while it waits for work, the worker ends when the command shuts the pool down. A write under way
+    still removes its temporary file (files.write_all)."""
+    signal.signal(signal.SIGINT, _interrupted)
+
+
+def _interrupted(signum: int, frame: object) -> None:
+    raise WorkerInterrupted
+
+
 def _each(work: Callable[[Item], Result], batch: list[Item]) -> list[Result]:
-    """A batch's work, in the process that took it."""
-    return [work(item) for item in batch]
+    """A batch's work, in the process that took it, Ctrl-C let through meanwhile (see _quiet_on_interrupt)."""
+    if not hasattr(signal, "pthread_sigmask"):
+        return [work(item) for item in batch]
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+    try:
+        return [work(item) for item in batch]
+    finally:
+        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
 
 
 def file_size(path: str) -> int:

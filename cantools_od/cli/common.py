@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 import sys
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -14,7 +14,7 @@ from ..model import Device, Diagnostic, Severity
 from ..model.source import capped
 
 if TYPE_CHECKING:
-    from ..files import Content
+    from ..files import Content, Guard
     from ..identifiers import Identifiers
 
 EXIT_OK = 0
@@ -41,9 +41,16 @@ def device_or_reason(path: str, node_id: int | None = None) -> Device | str:
     try:
         return load(path, node_id=node_id)
     except OSError as error:
-        return f"{path}: error: cannot read: {error.strerror or error}"
+        return f"{path}: error: cannot read: {unreadable(error)}"
     except NotADeviceDescription as error:
         return f"{path}: error: {error} [{error.code}]"
+
+
+def unreadable(error: OSError) -> str:
+    """Why a file could not be read, in words: "it is a folder", or the system's reason."""
+    if isinstance(error, IsADirectoryError):
+        return "it is a folder"
+    return error.strerror or str(error)
 
 
 def check_extension(path: str, role: str, allowed: Iterable[str] | None = None) -> None:
@@ -59,15 +66,54 @@ def check_extension(path: str, role: str, allowed: Iterable[str] | None = None) 
         sys.exit(EXIT_USAGE)
 
 
-def write_outputs(outputs: Mapping[Path, bytes] | Iterable[tuple[Path, Content]]) -> list[Path]:
-    """Write every output or none (see files.py); a failure exits with code 2 and one line."""
-    from ..files import CannotWrite, write_all
+def write_outputs(
+    outputs: Mapping[Path, bytes] | Iterable[tuple[Path, Content]],
+    *,
+    rewrites: Iterable[str | os.PathLike[str]] = (),
+    force: bool = False,
+    ours: Callable[[Path], bool] | None = None,
+) -> list[Path]:
+    """Write every output or none (see files.py and docs/outputs.md); a refusal or failure exits with code 2 and
+    one line. Every file the command read is an input no output may replace, but the `rewrites` it replaces by
+    design; a `Generated` output replaces only a file `ours` (default: the banner) recognises, or any with `force`."""
+    from ..files import CannotWrite, has_banner, write_all
 
     try:
-        return write_all(outputs.items() if isinstance(outputs, Mapping) else outputs)
+        items = outputs.items() if isinstance(outputs, Mapping) else outputs
+        return write_all(items, guard(rewrites, None if force else ours or has_banner))
     except CannotWrite as error:
         click.echo(f"error: {error}", err=True)
         sys.exit(EXIT_USAGE)
+
+
+def guard(rewrites: Iterable[str | os.PathLike[str]], ours: Callable[[Path], bool] | None) -> Guard:
+    """The guard of this command's outputs: what it read so far are its inputs (see files.record_reads); `ours`
+    recognises the files it generated (None: any file is replaced, --force)."""
+    from ..files import Guard, reads
+
+    return Guard(reads(), [Path(p) for p in rewrites], ours)
+
+
+class Output(click.Path):
+    """A path the command writes, through `write_outputs` (the write path): a file, or the folder it fills. Every
+    option that writes is declared with it; tests/journeys/test_writing_options.py finds them from the command line's
+    own definition and proves each one refuses what docs/outputs.md says."""
+
+
+class Rewritten(click.Path):
+    """Files the command rewrites in place by design (fmt, lint --fix), each read first: a file that cannot be read
+    (missing, a folder, no permission) is reported by the command itself, and the others still done."""
+
+    def __init__(self) -> None:
+        super().__init__(readable=False)
+
+
+def force_option(function: click.decorators.FC) -> click.decorators.FC:
+    return click.option(
+        "--force",
+        is_flag=True,
+        help="Replace files in the output folder that cantools-od did not generate (no generated-file banner).",
+    )(function)
 
 
 def errors_to_fix(device: Device) -> str | None:

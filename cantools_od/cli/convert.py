@@ -11,6 +11,7 @@ from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
     EXIT_USAGE,
+    Output,
     check_extension,
     errors_to_fix,
     node_id_option,
@@ -26,7 +27,7 @@ from .common import (
     "-o",
     "--output",
     required=True,
-    type=click.Path(dir_okay=False),
+    type=Output(dir_okay=False),
     help="File to write (.eds, .dcf, .xdd, .xpd, .xdc, .json).",
 )
 @node_id_option

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 import click
 
 from .batch import config_option, config_path, file_size, jobs_option, run_each
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, Rewritten
 
 if TYPE_CHECKING:
     from ..eds.format import IntStyle
@@ -20,7 +20,7 @@ RADIXES = ("canonical", "as-written", "hex", "decimal")
 
 
 @click.command(name="fmt")
-@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.argument("files", nargs=-1, required=True, type=Rewritten())
 @click.option("--check", is_flag=True, help="Change nothing; exit 1 when a file would change.")
 @click.option("--diff", "show_diff", is_flag=True, help="Change nothing; print what would change as a diff.")
 @click.option(
@@ -81,13 +81,13 @@ def _format(task: _Task) -> _Done:
     from ..model import Severity
     from ..model.source import capped
     from ..sniff import NotADeviceDescription
-    from .common import errors_to_fix
+    from .common import errors_to_fix, guard, unreadable
 
     name = task.name
     try:
         device = load(name)
     except OSError as error:
-        return _Done(EXIT_USAGE, err=[f"{name}: error: cannot read: {error.strerror or error}"])
+        return _Done(EXIT_USAGE, err=[f"{name}: error: cannot read: {unreadable(error)}"])
     except NotADeviceDescription as error:
         return _Done(EXIT_USAGE, err=[f"{name}: error: {error} [{error.code}]"])
     shown, notes = capped([d for d in device.diagnostics if d.severity is Severity.ERROR])
@@ -116,7 +116,7 @@ def _format(task: _Task) -> _Done:
         done.status = EXIT_FINDINGS
         return done
     try:
-        write_all([(path, formatted)])
+        write_all([(path, formatted)], guard(rewrites=[path], ours=None))
     except CannotWrite as error:
         done.err.append(f"error: {error}")
         done.status = EXIT_USAGE

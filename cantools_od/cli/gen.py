@@ -5,21 +5,24 @@ from __future__ import annotations
 import itertools
 import re
 import sys
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterator
 from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
+from ..files import Content, Generated
 from ..model import Device, Severity
 from .canopennode import keep_editor_readable, stack_config_option
 from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
     EXIT_USAGE,
+    Output,
     Progress,
     check_extension,
+    force_option,
     identifiers_for,
     node_id_option,
     pins_option,
@@ -53,15 +56,16 @@ def default_name(file: str) -> str:
     type=click.Choice(["c", "rust", "python", "markdown", "html", "canopennode", "dbc"]),
     help="What to generate; repeat for several (dbc: the PDOs at the node-ID, for trace tools).",
 )  # fmt: skip
-@click.option("-o", "--output", "outdir", required=True, type=click.Path(file_okay=False), help="Output folder.")
+@click.option("-o", "--output", "outdir", required=True, type=Output(file_okay=False), help="Output folder.")
 @click.option("--name", help=NAME_RULE)
 @click.option("--can-fd", is_flag=True, help="Allow PDOs up to 512 bits (CAN FD).")
-@click.option("--depfile", type=click.Path(dir_okay=False), help="Write a Makefile-style depfile for build systems.")
+@click.option("--depfile", type=Output(dir_okay=False), help="Write a Makefile-style depfile for build systems.")
 @click.option("--explain", is_flag=True, help="List every CANopenNode setting that was inferred (-t canopennode).")
 @click.option(
     "--keep-going", is_flag=True,
     help="Generate what errors in FILE do not touch, list what is left out, and exit 0.",
 )  # fmt: skip
+@force_option
 @stack_config_option
 @node_id_option
 @pins_option
@@ -77,9 +81,11 @@ def command(
     node_id: int | None,
     pin_file: str | None,
     stack_files: tuple[str, ...],
+    force: bool,
 ) -> None:
     """Generate code and documents for FILE into OUTDIR. Files are rewritten only when
-    their content changes, and all of them or none.
+    their content changes, and all of them or none. A file in OUTDIR that cantools-od did not
+    generate is not replaced (exit 2) unless --force, nor is any file the command reads.
 
     An error in FILE that touches what is generated (an invalid value, a broken section, a
     PDO that cannot be packed) fails the command with exit 1 and writes nothing; with
@@ -129,14 +135,14 @@ def command(
             sys.exit(EXIT_FINDINGS)
         click.echo(f"{file}: warning: left out of the generated files: {shown}", err=True)
     code_targets = tuple(target for target in targets if target != "dbc")
-    files: Iterator[tuple[Path, Iterable[bytes]]] = _files(view, code_targets, name, Path(outdir), left_out)
+    files: Iterator[tuple[Path, Content]] = _files(view, code_targets, name, Path(outdir), left_out)
     if "dbc" in targets:
-        files = itertools.chain(files, [(Path(outdir) / f"{base}.dbc", [_dbc(device, file, node_id, base)])])
+        files = itertools.chain(files, [Generated(Path(outdir) / f"{base}.dbc", [_dbc(device, file, node_id, base)])])
     if depfile:
         pins = pin_file_for(file, pin_file)
         files = _with_depfile(files, Path(depfile), [file, *([str(pins)] if pins else []), *extra_inputs, *stack_files])
     # Each file is rendered as it is written; a failure anywhere leaves every output as it was.
-    write_outputs(_counted(files))
+    write_outputs(_counted(files), force=force)
     sys.exit(EXIT_OK)
 
 
@@ -178,7 +184,7 @@ def _view(
 
 def _files(
     view: DeviceView, targets: tuple[str, ...], name: str | None, outdir: Path, left_out: list[str]
-) -> Iterator[tuple[Path, Iterator[bytes]]]:
+) -> Iterator[tuple[Path, Content]]:
     """Every target's files, each as its encoded text in pieces (rendered when read), in target order."""
     from ..render import streamer
     from ..render.notes import left_out_note
@@ -188,26 +194,33 @@ def _files(
         target_view = replace(view, name=name or "OD") if target == "canopennode" else view
         for filename, pieces in streamer(target)(target_view).items():
             text = itertools.chain([left_out_note(filename, left_out)], pieces)
-            yield outdir / filename, (piece.encode("utf-8") for piece in text)
+            yield Generated(outdir / filename, (piece.encode("utf-8") for piece in text))
 
 
-def _counted(files: Iterator[tuple[Path, Iterable[bytes]]]) -> Iterator[tuple[Path, Iterable[bytes]]]:
+def _counted(files: Iterator[tuple[Path, Content]]) -> Iterator[tuple[Path, Content]]:
     """`files`, each named on a terminal as it is rendered (large devices take seconds a file)."""
     progress = Progress("gen")
-    for path, content in files:
-        progress.step(path.name)
-        yield path, content
+    for output in files:
+        path, content = output
+        counted = _stepped(progress, path.name, content)
+        yield Generated(path, counted) if isinstance(output, Generated) else (path, counted)
+
+
+def _stepped(progress: Progress, name: str, content: Content) -> Iterator[bytes]:
+    """`content`, its file counted on the terminal when it starts to be rendered."""
+    progress.step(name)
+    yield from [content] if isinstance(content, bytes) else content
     progress.clear()
 
 
 def _with_depfile(
-    files: Iterator[tuple[Path, Iterable[bytes]]], depfile: Path, inputs: list[str]
-) -> Iterator[tuple[Path, Iterable[bytes]]]:
+    files: Iterator[tuple[Path, Content]], depfile: Path, inputs: list[str]
+) -> Iterator[tuple[Path, Content]]:
     """`files`, then a Makefile-style depfile naming them as the targets of `inputs`."""
     written = []
-    for path, content in files:
-        written.append(path)
-        yield path, content
+    for output in files:
+        written.append(output[0])
+        yield output
     rule = " ".join(_escape(str(p)) for p in written) + ": " + " ".join(_escape(i) for i in inputs) + "\n"
     yield depfile, [rule.encode("utf-8")]
 

@@ -8,14 +8,23 @@ from pathlib import Path
 import click
 
 from ..model import Severity
-from .common import EXIT_FINDINGS, errors_to_fix, identifiers_for, pins_option, read_device, report, write_outputs
+from .common import (
+    EXIT_FINDINGS,
+    Output,
+    errors_to_fix,
+    identifiers_for,
+    pins_option,
+    read_device,
+    report,
+    write_outputs,
+)
 
 
 @click.command(name="ids")
 @click.argument("file", type=click.Path(dir_okay=False))
 @pins_option
 @click.option(
-    "-o", "--output", type=click.Path(dir_okay=False), help="Write the pin file here (atomically) instead of to stdout."
+    "-o", "--output", type=Output(dir_okay=False), help="Write the pin file here (atomically) instead of to stdout."
 )
 def command(file: str, pin_file: str | None, output: str | None) -> None:
     """Print the identifier of every object and sub-object of FILE as a TOML
@@ -32,4 +41,7 @@ def command(file: str, pin_file: str | None, output: str | None) -> None:
     if output is None:
         click.echo(text, nl=False)
     else:
-        write_outputs({Path(output): text.encode("utf-8")})
+        from ..identifiers import pin_file_for
+
+        pins = pin_file_for(file, pin_file)  # the pin file read is updated by design: its pins are kept
+        write_outputs({Path(output): text.encode("utf-8")}, rewrites=[pins] if pins is not None else [])

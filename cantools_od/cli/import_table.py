@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, check_extension, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Output, check_extension, write_outputs
 
 OUTPUT_SUFFIXES = (".eds", ".xdd", ".xpd", ".json")  # a DCF or XDC is for one node: convert makes it
 
@@ -17,11 +17,11 @@ LAYOUT_CHOICES = ["auto", "text", "cells", "csv", "tsv", "xlsx", "markdown"]
 @click.command(name="import-table")
 @click.argument("sources", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @click.option(
-    "-o", "--output", required=True, type=click.Path(dir_okay=False),
+    "-o", "--output", required=True, type=Output(dir_okay=False),
     help="File to write: .eds, .xdd/.xpd, or .json (the model with its manual line numbers).",
 )  # fmt: skip
 @click.option("--overrides", type=click.Path(dir_okay=False), help="TOML file resolving conflicts (see docs).")
-@click.option("--report", "report_file", type=click.Path(dir_okay=False), help="Write a Markdown import report.")
+@click.option("--report", "report_file", type=Output(dir_okay=False), help="Write a Markdown import report.")
 @click.option(
     "--layout", type=click.Choice(LAYOUT_CHOICES), default="auto", show_default=True,
     help="Force the layout of every SOURCE instead of detecting it.",

@@ -12,7 +12,7 @@ import click
 
 from .batch import config_option, config_path, file_size, jobs_option, run_each
 from .canopennode import load_stack_config, stack_config_option
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, Rewritten
 
 if TYPE_CHECKING:
     from ..lint import Finding, LintOptions, Selection
@@ -29,7 +29,7 @@ def _codes(values: tuple[str, ...]) -> tuple[str, ...]:
 
 
 @click.command(name="lint")
-@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.argument("files", nargs=-1, required=True, type=Rewritten())  # rewritten with --fix
 @click.option(
     "--format", "fmt", type=click.Choice(["text", "json", "sarif", "github"]), default="text", show_default=True
 )
@@ -110,7 +110,8 @@ def command(
         findings.extend(lint_network(devices, options, tasks[0].selection))
     from ..lint import has_errors
 
-    click.echo(_render(fmt, findings, len(files)), nl=False)
+    unread = sum(not one.read for one in checked)
+    click.echo(_render(fmt, findings, len(files) - unread, unread), nl=False)
     worst = max((one.status for one in checked), default=EXIT_OK)
     sys.exit(max(worst, EXIT_FINDINGS if has_errors(findings) else EXIT_OK))
 
@@ -148,6 +149,7 @@ class _Checked:
     status: int = EXIT_OK  # EXIT_USAGE when the file could not be read or written
     message: str = ""  # a line for stderr
     device: Device | None = None
+    read: bool = True  # False: the file could not be read at all
 
 
 def _check(task: _Task) -> _Checked:
@@ -160,7 +162,7 @@ def _check(task: _Task) -> _Checked:
     try:
         device = load(task.name, node_id=task.options.node_id)
     except OSError as error:
-        return _Checked(status=EXIT_USAGE, message=f"{task.name}: error: cannot read: {error.strerror or error}")
+        return _unreadable(task, error)
     except NotADeviceDescription as error:
         return _not_a_device(task, error)
     result = lint(device, task.options, task.selection)
@@ -176,6 +178,18 @@ def _check(task: _Task) -> _Checked:
         device = load(task.name, node_id=task.options.node_id)
         result = lint(device, task.options, task.selection)
     return _Checked([_sent(f) for f in result], message=said, device=device if task.keep else None)
+
+
+def _unreadable(task: _Task, error: OSError) -> _Checked:
+    """A file that cannot be read (missing, a folder, no permission): an EDS000 finding in the report, in every
+    format, whatever is selected (nothing of it was checked); exit 2 once every other file is checked."""
+    from ..lint.rules import RULES, Finding
+    from ..model.source import location
+    from ..sniff import NOT_A_DEVICE_DESCRIPTION as code
+    from .common import unreadable
+
+    finding = Finding(code, RULES[code].severity, f"cannot read: {unreadable(error)}", location(task.name, 1, 1))
+    return _Checked([finding], EXIT_USAGE, read=False)
 
 
 def _not_a_device(task: _Task, error: Exception) -> _Checked:
@@ -198,13 +212,14 @@ def _fix(task: _Task, device: Device, result: list[Finding]) -> str:
     """Apply the fixes chosen and write the file; the reason when it cannot be written."""
     from ..api import dumps, format_for
     from ..files import CannotWrite, write_all
+    from .common import guard
 
     for finding in result:
         if finding.fix is not None and _applies(finding, task.fixing):
             finding.fix.apply(device)
     path = Path(task.name)
     try:
-        write_all([(path, dumps(device, format_for(path)))])
+        write_all([(path, dumps(device, format_for(path)))], guard(rewrites=[path], ours=None))
     except CannotWrite as error:
         return f"error: {error}"
     return ""
@@ -234,7 +249,7 @@ def _bus_findings(bus: str, defines: tuple[str, ...], selection: Selection) -> l
     return [finding for finding in findings if selection.enabled(finding.code, bus)]
 
 
-def _render(fmt: str, findings: list[Finding], files: int) -> str:
+def _render(fmt: str, findings: list[Finding], files: int, unread: int) -> str:
     from ..lint import output
 
-    return output.render(fmt, findings, files)
+    return output.render(fmt, findings, files, unread)

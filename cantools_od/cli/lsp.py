@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import signal
+from types import FrameType
+
 import click
 
 
@@ -13,4 +16,13 @@ def command(stdio: bool) -> None:
     completion. An editor starts it; see README, "Editors"."""
     from ..lsp.server import serve
 
+    interrupted: list[int] = []
+
+    def on_interrupt(signum: int, frame: FrameType | None) -> None:
+        interrupted.append(signum)
+        signal.default_int_handler(signum, frame)
+
+    signal.signal(signal.SIGINT, on_interrupt)
     serve()
+    if interrupted:  # pygls ends quietly on Ctrl-C; it is still an interruption (exit 130, as every command)
+        raise KeyboardInterrupt

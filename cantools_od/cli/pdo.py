@@ -13,6 +13,8 @@ from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
     EXIT_USAGE,
+    Output,
+    force_option,
     identifiers_for,
     node_id_option,
     pins_option,
@@ -29,12 +31,13 @@ if TYPE_CHECKING:
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "svg"]), default="text", show_default=True)
 @click.option(
-    "-o", "--output", "outdir", type=click.Path(file_okay=False),
+    "-o", "--output", "outdir", type=Output(file_okay=False),
     help="With --format svg: a folder for one picture per PDO (rpdo1.svg, ...) instead of one sheet on stdout.",
 )  # fmt: skip
+@force_option
 @node_id_option
 @pins_option
-def command(file: str, fmt: str, outdir: str | None, node_id: int | None, pin_file: str | None) -> None:
+def command(file: str, fmt: str, outdir: str | None, node_id: int | None, pin_file: str | None, force: bool) -> None:
     """Show the PDOs FILE configures, from its default (or DCF) values: drawn bit by bit, as
     JSON (--format json), or as SVG bit-field pictures (--format svg)."""
     from ..model import NodeIdExpr
@@ -47,7 +50,7 @@ def command(file: str, fmt: str, outdir: str | None, node_id: int | None, pin_fi
     errors = report(device.diagnostics)
     pdos = pdo_map(device, identifiers=identifiers_for(device, file, pin_file))
     if fmt == "svg":
-        _svg(file, pdos, device.node_id if node_id is None else node_id, outdir)
+        _svg(file, pdos, device.node_id if node_id is None else node_id, outdir, force)
     elif fmt == "json":
         symbolic = [p.name for p in pdos if isinstance(p.cob_id, NodeIdExpr)]
         if symbolic:
@@ -100,8 +103,10 @@ def command(file: str, fmt: str, outdir: str | None, node_id: int | None, pin_fi
     sys.exit(EXIT_FINDINGS if errors else EXIT_OK)
 
 
-def _svg(file: str, pdos: list[Pdo], node_id: int | None, outdir: str | None) -> None:
-    """One sheet of every PDO's picture on stdout, or one file a PDO in `outdir`."""
+def _svg(file: str, pdos: list[Pdo], node_id: int | None, outdir: str | None, force: bool) -> None:
+    """One sheet of every PDO's picture on stdout, or one file a PDO in `outdir` (which replaces only pictures it
+    made before, unless `force`)."""
+    from ..files import Generated
     from ..render.svg import sheet
     from ..views.bitfield import diagram
 
@@ -110,4 +115,6 @@ def _svg(file: str, pdos: list[Pdo], node_id: int | None, outdir: str | None) ->
     if outdir is None:
         click.echo(sheet(diagrams, banner), nl=False)
         return
-    write_outputs({Path(outdir) / f"{d.anchor}.svg": sheet([d], banner).encode("utf-8") for d in diagrams})
+    write_outputs(
+        [Generated(Path(outdir) / f"{d.anchor}.svg", sheet([d], banner).encode("utf-8")) for d in diagrams], force=force
+    )

@@ -12,7 +12,7 @@ from ..model.source import capped
 from .rules import RULES, Finding
 
 
-def render(fmt: str, findings: list[Finding], files: int) -> str:
+def render(fmt: str, findings: list[Finding], files: int, unread: int = 0) -> str:
     """The findings in the `--format` chosen: text, json, sarif or github."""
     if fmt == "json":
         return as_json(findings)
@@ -20,16 +20,18 @@ def render(fmt: str, findings: list[Finding], files: int) -> str:
         return sarif(findings)
     if fmt == "github":
         return github(findings)
-    return text(findings, files)
+    return text(findings, files, unread)
 
 
-def text(findings: list[Finding], files: int) -> str:
-    """gcc-style lines, at most a few per code and file (the rest counted), and a summary of all."""
+def text(findings: list[Finding], files: int, unread: int = 0) -> str:
+    """gcc-style lines, at most a few per code and file (the rest counted), and a summary of all: the files
+    checked, and those that could not be read (`unread`, each an EDS000 finding)."""
     shown, notes = capped(findings)
     lines = [finding.format() + _fix_note(finding) for finding in shown] + notes
     counts = Counter(f.severity for f in findings)
     summary = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity if counts[s])
-    lines.append(f"{files} file{'s' if files != 1 else ''} checked: {summary or 'no findings'}")
+    checked = f"{files} file{'s' if files != 1 else ''} checked" + (f", {unread} not read" if unread else "")
+    lines.append(f"{checked}: {summary or 'no findings'}")
     return "\n".join(lines) + "\n"
 
 

@@ -20,7 +20,9 @@ The file holds no device description: binary data (a NUL byte), nothing but blan
 without a single `[section]` header, or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
 command refuses such a file with this one line and exit code 2, and never writes to it: a
 formatter that read it as an empty device would otherwise replace it with one. The line names what
-the file's name promised: a binary `device.xdd` is "not an XDD/XDC (CiA 311) file".""",
+the file's name promised: a binary `device.xdd` is "not an XDD/XDC (CiA 311) file". `lint` reports a
+file it cannot read at all (missing, a folder, no permission) with this code too, "cannot read: REASON",
+whatever is selected, and checks every other file before it exits 2.""",
     "; whole file: device.eds\nIndex,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro",
     fixed="; file: device.eds\n[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
     "DefaultValue=0\nPDOMapping=0",

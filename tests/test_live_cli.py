@@ -203,3 +203,21 @@ def test_a_script_without_setup_is_one_line_and_2(tmp_path: Path) -> None:
     assert result.returncode == 2
     _one_line_no_traceback(result.stderr)
     assert "defines no setup(node) function" in result.stderr
+
+
+def test_probe_never_writes_its_values_over_the_description_or_a_read_only_file(tmp_path: Path) -> None:
+    """`-o` goes through the one write path: onto the EDS it reads, or onto a read-only file, it is refused in one
+    line (exit 2) and both stay byte for byte (tests/journeys/test_writing_options.py cannot run a live node)."""
+    port = next(PORTS)
+    description = tmp_path / "drive.eds"
+    description.write_bytes(DRIVE.read_bytes())
+    kept = tmp_path / "kept.dcf"
+    kept.write_bytes(b"[FileInfo]\n")
+    kept.chmod(0o444)
+    with simulate(port):
+        onto_input = probe(port, "-o", str(description), file=description, cwd=tmp_path)
+        onto_read_only = probe(port, "-o", str(kept), file=description, cwd=tmp_path)
+    assert onto_input.returncode == 2 and "drive.eds" in onto_input.stderr.splitlines()[-1], onto_input.stderr
+    assert onto_read_only.returncode == 2 and "kept.dcf" in onto_read_only.stderr.splitlines()[-1]
+    assert "Traceback" not in onto_input.stderr + onto_read_only.stderr
+    assert description.read_bytes() == DRIVE.read_bytes() and kept.read_bytes() == b"[FileInfo]\n"

@@ -283,7 +283,10 @@ def command(
             sys.exit(EXIT_FINDINGS)
     files, removed = _outputs(plan, bus, defines, outdir, dbc, svg, write_bus, data_bitrate, no_node_dcf, remote_pdo)
     if files:
-        write_outputs(files, force=force, ours=configuration_file)
+        from ..network.outputs import MANIFEST
+
+        manifest = [Path(outdir) / MANIFEST] if outdir is not None else []  # read, then rewritten by design
+        write_outputs(files, force=force, ours=configuration_file, rewrites=manifest)
     _remove(removed)
     if show_load:
         from ..network.load import bus_load, format_load

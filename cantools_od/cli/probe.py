@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, NoReturn
 import click
 
 from .canbus import EXIT_INTERRUPTED, bus_options, connected, terminate_as_interrupt
-from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, node_id_option, read_device, write_outputs
+from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Output, Progress, node_id_option, read_device, write_outputs
 
 if TYPE_CHECKING:
     from ..lint import Finding
@@ -34,7 +34,7 @@ if TYPE_CHECKING:
     help="Seconds to wait for the node to answer at all (a node still booting).",
 )  # fmt: skip
 @click.option("--check-writes", is_flag=True, help="Write each writable entry back with the value just read.")
-@click.option("-o", "--output", type=click.Path(dir_okay=False), help="Write the values read as a DCF (or .json).")
+@click.option("-o", "--output", type=Output(dir_okay=False), help="Write the values read as a DCF (or .json).")
 def command(
     file: str,
     node_id: int | None,

@@ -6,9 +6,11 @@ from __future__ import annotations
 
 from pathlib import PurePath
 
-from .escape import c_comment, line_comment, markdown_text
+from .escape import c_comment, line_comment, markdown_text, xml_comment
 
 HEADLINE = "cantools-od gen --keep-going left out what errors in the input touch:"
+XML_HEADLINE = "cantools-od gen (keep going) left out what errors in the input touch:"
+"""An XML comment (SVG, HTML) may not hold `--`."""
 
 
 def left_out_note(filename: str, left_out: list[str]) -> str:
@@ -18,6 +20,8 @@ def left_out_note(filename: str, left_out: list[str]) -> str:
     suffix = PurePath(filename).suffix.lower()
     if suffix in (".c", ".h", ".cpp", ".hpp", ".cc"):
         lines = [f"/* {c_comment(line)} */" for line in [HEADLINE, *(f"- {item}" for item in left_out)]]
+    elif suffix in (".svg", ".html"):
+        lines = [f"<!-- {xml_comment(line)} -->" for line in [XML_HEADLINE, *(f"- {item}" for item in left_out)]]
     elif suffix == ".md":
         lines = [f"> {HEADLINE}", ">", *(f"> - {markdown_text(item)}" for item in left_out), ""]
     else:  # Rust, Python, TOML and other languages with line comments

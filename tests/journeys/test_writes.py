@@ -56,7 +56,7 @@ def test_new_files_follow_the_umask(tmp_path: Path, umask: int) -> None:
     for command in writes(tmp_path).values():
         assert run(*command, cwd=tmp_path, umask=umask).returncode == 0
     created = [tmp_path / "drive.json", *(tmp_path / "out").iterdir()]
-    assert len(created) == 5
+    assert len(created) >= 5  # the JSON, the code files, the depfile, the page and its PDO pictures
     for path in created:
         assert path.stat().st_mode & 0o777 == 0o666 & ~umask, f"{path.name}: {oct(path.stat().st_mode)}"
 

@@ -13,11 +13,6 @@ SHARED = ROOT.parent / "shared"
 CORPUS = SHARED / "eds-corpus" / "eds"
 
 
-FRAGMENT_IGNORE = 'ignore = ["EDS009", "EDS011", "EDS012"]'
-"""The configuration of a folder of fragments of device descriptions (no [FileInfo], mandatory objects or object
-lists): `fmt` and `convert` leave a file with errors as it is unless its configuration ignores their codes."""
-
-
 def shared_files(suffixes: tuple[str, ...]) -> list[Path]:
     """Every file anywhere in ../shared (corpus, both sides of the history pairs, third_party) whose suffix, in
     lower case, is one of `suffixes`; [] when ../shared is absent."""

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from support import EXAMPLES, FRAGMENT_IGNORE, cli_command
+from support import EXAMPLES, cli_command
 
 
 def run(*args: str | Path, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
@@ -60,7 +60,6 @@ def test_bad_content_gives_located_diagnostics(tmp_path: Path) -> None:
 
 def test_fmt_check_diff_and_write(tmp_path: Path) -> None:
     target = tmp_path / "x.eds"  # in a folder of its own: no [tool.cantools-od] style applies
-    (tmp_path / "pyproject.toml").write_text(f"[tool.cantools-od]\n{FRAGMENT_IGNORE}\n")  # a fragment
     target.write_bytes(b"[2000]\r\nParameterName=X\r\nAccessType=RO\r\nDataType=5\r\n")
     check = run("fmt", "--check", target, cwd=tmp_path)
     assert check.returncode == 1 and "would reformat" in check.stderr

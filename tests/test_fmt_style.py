@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from support import FRAGMENT_IGNORE, cli_command
+from support import cli_command
 
 VENDOR_STYLE = (
     "[2000]\n"
@@ -31,7 +31,8 @@ VENDOR_STYLE = (
 
 
 def fmt(folder: Path, *args: str, config: str | None = None) -> tuple[subprocess.CompletedProcess[str], str]:
-    (folder / "pyproject.toml").write_text(f"[tool.cantools-od]\n{FRAGMENT_IGNORE}\n{config or ''}\n")
+    if config is not None:
+        (folder / "pyproject.toml").write_text(f"[tool.cantools-od]\n{config}\n")
     target = folder / "vendor.eds"
     target.write_text(VENDOR_STYLE)
     result = subprocess.run(

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from pykit import eds_text, pdo, var
 
-from support import FRAGMENT_IGNORE, cli_command
+from support import cli_command
 
 _MODULES = """\
 [SupportedModules]
@@ -180,7 +180,6 @@ def test_pdo_names_what_modules_create(tmp_path: Path) -> None:
 def test_module_sections_are_kept_byte_for_byte(tmp_path: Path) -> None:
     dcf_text = COUPLER_EDS + CONNECTED
     eds, dcf = _write(tmp_path, "coupler.eds", COUPLER_EDS), _write(tmp_path, "coupler.dcf", dcf_text)
-    _write(tmp_path, "pyproject.toml", f"[tool.cantools-od]\n{FRAGMENT_IGNORE}\n")  # a fragment
     assert _run(tmp_path, "fmt", "coupler.eds", "coupler.dcf").returncode == 0
     assert _run(tmp_path, "convert", "coupler.eds", "-o", "made.dcf", "--node-id", "5").returncode == 0
     for original, written in ((COUPLER_EDS, eds), (dcf_text, dcf), (COUPLER_EDS, tmp_path / "made.dcf")):

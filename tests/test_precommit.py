@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from support import EXAMPLES, FRAGMENT_IGNORE, ROOT
+from support import EXAMPLES, ROOT
 
 # Its tests share module fixtures: under pytest-xdist they run on one worker, which makes them once.
 pytestmark = pytest.mark.xdist_group("precommit")
@@ -106,9 +106,7 @@ def workspace(tmp_path_factory: pytest.TempPathFactory, published: Published) ->
     (repo / ".pre-commit-config.yaml").write_text(HOOKS_CONFIG.format(url=published.url), encoding="utf-8")
     shutil.copy(EXAMPLES / "io_device.eds", repo / "good.eds")
     (repo / "bad.eds").write_text(BAD)
-    (repo / "fragments").mkdir()
-    (repo / "fragments" / "pyproject.toml").write_text(f"[tool.cantools-od]\n{FRAGMENT_IGNORE}\n")
-    (repo / "fragments" / "messy.eds").write_bytes(b"[2000]\r\nParameterName=X\r\nAccessType=RO\r\nDataType=5\r\n")
+    (repo / "messy.eds").write_bytes(b"[2000]\r\nParameterName=X\r\nAccessType=RO\r\nDataType=5\r\n")
     (repo / "bad.xdd").write_text(BAD_XDD)
     git(repo, "add", ".")
     return repo, environment(published)
@@ -138,12 +136,10 @@ def test_lint_hook_fails_a_bad_file_with_its_diagnostic(workspace: tuple[Path, d
 
 def test_fmt_hook_rewrites_and_then_passes(workspace: tuple[Path, dict[str, str]]) -> None:
     repo, _ = workspace
-    first = try_repo(workspace, "cantools-od-fmt", "fragments/messy.eds")
+    first = try_repo(workspace, "cantools-od-fmt", "messy.eds")
     assert first.returncode == 1 and "files were modified by this hook" in first.stdout
-    assert (
-        repo / "fragments" / "messy.eds"
-    ).read_bytes() == b"[2000]\nParameterName=X\nDataType=0x0005\nAccessType=ro\n"
-    second = try_repo(workspace, "cantools-od-fmt", "fragments/messy.eds")
+    assert (repo / "messy.eds").read_bytes() == b"[2000]\nParameterName=X\nDataType=0x0005\nAccessType=ro\n"
+    second = try_repo(workspace, "cantools-od-fmt", "messy.eds")
     assert second.returncode == 0, second.stdout
 
 

@@ -4,18 +4,14 @@ and each file's configuration found from its own folder (`--config` overrides it
 from __future__ import annotations
 
 import os
-import sys
 from collections.abc import Callable, Sequence
 from functools import cache
 from pathlib import Path
-from typing import TYPE_CHECKING, TypeVar
+from typing import TypeVar
 
 import click
 
-from .common import EXIT_USAGE, Progress
-
-if TYPE_CHECKING:
-    from ..lint import Selection
+from .common import Progress
 
 Item = TypeVar("Item")
 Result = TypeVar("Result")
@@ -137,18 +133,6 @@ def config_of_folder(folder: Path) -> Path | None:
     from ..lint.config import find_config
 
     return find_config(folder)
-
-
-def file_selection(name: str, config: str | None = None) -> Selection:
-    """The rules `lint` runs on the file: its configuration's (--config, else the nearest from its folder
-    upwards); a malformed one exits with code 2."""
-    from ..lint import load_selection
-
-    try:
-        return load_selection(config_path(name, config))
-    except ValueError as error:
-        click.echo(f"error: configuration: {error}", err=True)
-        sys.exit(EXIT_USAGE)
 
 
 def config_path(file: str, explicit: str | None) -> Path | None:

@@ -16,7 +16,6 @@ from ..model.source import capped
 if TYPE_CHECKING:
     from ..files import Content
     from ..identifiers import Identifiers
-    from ..lint import Finding, Selection
 
 EXIT_OK = 0
 EXIT_FINDINGS = 1
@@ -76,15 +75,6 @@ def errors_to_fix(device: Device) -> str | None:
     on (fmt, convert, ids) then does nothing rather than lose or spread what it could not read."""
     count = sum(d.severity is Severity.ERROR for d in device.diagnostics)
     return f"{count} error{'s' if count != 1 else ''} to fix first" if count else None
-
-
-def lint_errors(device: Device, selection: Selection, node_id: int | None = None) -> list[Finding]:
-    """The errors `cantools-od lint FILE` reports for the device, with the file's configuration (`selection`):
-    `fmt` and `convert` leave a file with any as it is (exit 1), since an error in the input fails a command
-    unless the user opted out, which the configuration's `ignore` of the code does."""
-    from ..lint import LintOptions, lint
-
-    return [f for f in lint(device, LintOptions(node_id=node_id), selection) if f.severity is Severity.ERROR]
 
 
 def report(diagnostics: Iterable[Diagnostic], minimum: Severity = Severity.WARNING) -> bool:

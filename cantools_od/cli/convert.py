@@ -7,14 +7,12 @@ from pathlib import Path
 
 import click
 
-from ..model.source import capped
-from .batch import file_selection
 from .common import (
     EXIT_FINDINGS,
     EXIT_OK,
     EXIT_USAGE,
     check_extension,
-    lint_errors,
+    errors_to_fix,
     node_id_option,
     read_device,
     report,
@@ -36,24 +34,16 @@ def command(source: str, output: str, node_id: int | None) -> None:
     """Convert SOURCE to OUTPUT between EDS, DCF, XDD (.xdd, .xpd), XDC and JSON, by their
     extensions. The same format in and out keeps the original
     layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id. A SOURCE
-    `lint` reports an error in is not converted (exit 1; a code its configuration
-    ignores is no error)."""
+    with errors is not converted (exit 1)."""
     from ..api import dumps, format_for, loads
 
     check_extension(source, "input")
     check_extension(output, "output")
     device = read_device(source, node_id)
     report(device.diagnostics)
-    errors = lint_errors(device, file_selection(source), node_id)
-    if errors:  # an error in the input fails the command; the configuration's `ignore` opts out
-        said = {d.code for d in device.diagnostics}  # the reader's, reported above
-        shown, notes = capped([error for error in errors if error.code not in said])
-        for line in [error.format() for error in shown] + notes:
-            click.echo(line, err=True)
-        count = f"{len(errors)} error{'s' if len(errors) != 1 else ''}"
-        click.echo(
-            f"{source}: error: not converted: {count} to fix first (as `cantools-od lint` reports them)", err=True
-        )
+    problems = errors_to_fix(device)
+    if problems:
+        click.echo(f"{source}: error: not converted: {problems}", err=True)
         sys.exit(EXIT_FINDINGS)
     _refuse_other_node_id(source, device.commissioning.node_id if device.commissioning else None, node_id)
     fmt_in, fmt_out = format_for(Path(source)), format_for(Path(output))

@@ -10,12 +10,11 @@ from typing import TYPE_CHECKING
 
 import click
 
-from .batch import config_option, config_path, file_selection, file_size, jobs_option, run_each
+from .batch import config_option, config_path, file_size, jobs_option, run_each
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress
 
 if TYPE_CHECKING:
     from ..eds.format import IntStyle
-    from ..lint import Selection
 
 RADIXES = ("canonical", "as-written", "hex", "decimal")
 
@@ -37,16 +36,14 @@ def command(
     """Rewrite FILES in canonical form (CiA 306 key order and spelling, sorted
     sections, integers by the radix style, LF line ends), spelled so that every
     peer reader reads what the original said. A file is written only when its
-    content changes, and never when `lint` reports an error in it (exit 1; a
-    code the configuration ignores is no error). A file that cannot be read is
-    reported (exit 2) and every other file still formatted."""
+    content changes, and never when it has errors (exit 1). A file that cannot
+    be read is reported (exit 2) and every other file still formatted."""
     from ..lint.config import load_int_style
 
     tasks = []
     for name in files:
         try:
-            style = load_int_style(config_path(name, config), radix)
-            tasks.append(_Task(name, style, file_selection(name, config), check or show_diff, show_diff))
+            tasks.append(_Task(name, load_int_style(config_path(name, config), radix), check or show_diff, show_diff))
         except ValueError as error:
             click.echo(f"error: configuration: {error}", err=True)
             sys.exit(EXIT_USAGE)
@@ -65,7 +62,6 @@ def command(
 class _Task:
     name: str
     int_style: IntStyle
-    selection: Selection  # the rules `lint` runs on the file: an error of one leaves it as it is
     dry: bool  # --check or --diff: write nothing
     show_diff: bool
 
@@ -82,9 +78,10 @@ def _format(task: _Task) -> _Done:
     from ..api import dumps, format_for, load
     from ..eds.decode import mixed_encoding
     from ..files import CannotWrite, write_all
+    from ..model import Severity
     from ..model.source import capped
     from ..sniff import NotADeviceDescription
-    from .common import lint_errors
+    from .common import errors_to_fix
 
     name = task.name
     try:
@@ -93,15 +90,15 @@ def _format(task: _Task) -> _Done:
         return _Done(EXIT_USAGE, err=[f"{name}: error: cannot read: {error.strerror or error}"])
     except NotADeviceDescription as error:
         return _Done(EXIT_USAGE, err=[f"{name}: error: {error} [{error.code}]"])
-    errors = lint_errors(device, task.selection)
-    if errors:
-        # The canonical form of a file with errors could drop what the reader did not understand, or carry the
-        # error on: an error in the input fails the command (the configuration's `ignore` opts out).
-        shown, notes = capped(errors)
-        count = f"{len(errors)} error{'s' if len(errors) != 1 else ''}"
-        return _Done(EXIT_FINDINGS, err=[f.format() for f in shown] + notes + [f"{name}: error: not formatted: {count}"
-                     " to fix first (as `cantools-od lint` reports them)"])  # fmt: skip
-    done = _Done()
+    shown, notes = capped([d for d in device.diagnostics if d.severity is Severity.ERROR])
+    done = _Done(err=[d.format() for d in shown] + notes)
+    problems = errors_to_fix(device)
+    if problems:
+        # The canonical form of a file the reader could not fully make sense of could drop
+        # what it did not understand: such a file is left as it is.
+        done.err.append(f"{name}: error: not formatted: {problems}")
+        done.status = EXIT_FINDINGS
+        return done
     path = Path(name)
     original = path.read_bytes()
     mixed = mixed_encoding(original)

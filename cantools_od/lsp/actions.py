@@ -7,10 +7,10 @@ from pathlib import Path
 from lsprotocol import types
 
 from ..api import dumps, format_for
+from ..cli.common import errors_to_fix
 from ..eds.decode import decode_as
 from ..lint import Finding, LintOptions, lint
 from ..lint.config import load_int_style
-from ..model import Severity
 from .document import Analysis, Encoding, path_of, read, selection_for
 from .edits import edits, one_edit
 
@@ -87,9 +87,9 @@ def formatted(uri: str, analysis: Analysis, encoding: Encoding) -> str:
     device = analysis.device
     if device is None:
         raise NotFormatted(analysis.refusal[1] if analysis.refusal else analysis.config_error or "not read")
-    errors = sum(f.severity is Severity.ERROR for f in analysis.findings)  # as `fmt`: lint's errors, configured
-    if errors:
-        raise NotFormatted(f"not formatted: {errors} error{'s' if errors != 1 else ''} to fix first")
+    problems = errors_to_fix(device)
+    if problems:
+        raise NotFormatted(f"not formatted: {problems}")
     path = _path(uri)
     try:
         style = load_int_style(path.parent if path_of(uri) is not None else Path.cwd())

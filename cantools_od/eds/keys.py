@@ -164,9 +164,13 @@ OBJECT_SECTION = re.compile(
 compact kind."""
 MODULE_SECTION = re.compile(r"(?:m\d+\D.*|supportedmodules|connectedmodules)\Z", re.IGNORECASE)
 """The module sections of a modular device (CiA 306 §6)."""
+OTHER_SECTION = re.compile(r"(?:tools|tool[1-9][0-9]*|dynamicchannels)\Z", re.IGNORECASE)
+"""CiA 306 sections the model keeps as they are: the tool list and dynamic channels."""
 
 
 def is_file_section(name: str) -> bool:
-    """Whether `name` (as between the brackets) is a CiA 306 section of the file's own or of its modules."""
+    """Whether `name` (as between the brackets) is a CiA 306 section of the file's own, of its modules, or of
+    its tools and dynamic channels."""
     name = name.strip()
-    return name.lower() in SECTION_SPELLINGS or MODULE_SECTION.match(name) is not None
+    known = name.lower() in SECTION_SPELLINGS
+    return known or MODULE_SECTION.match(name) is not None or OTHER_SECTION.match(name) is not None

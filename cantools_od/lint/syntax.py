@@ -25,7 +25,6 @@ LATER_OBJECT_KEYS = ("SRDOMapping", "InvertedSRAD")
 EXTENSION_KEYS = ("Factor", "Unit", "Description", "StorageLocation")  # python-canopen; see portability
 _OBJECT_KEYS = (*OBJECT_FIELDS, *LATER_OBJECT_KEYS, *EXTENSION_KEYS)
 _OBJECT_LIKE = re.compile(r"[0-9a-f]{1,4}(?:sub[0-9a-f]+|name|value|denotation|objectlinks)?\Z", re.IGNORECASE)
-_OTHER_KNOWN = re.compile(r"(?:tools|tool[1-9][0-9]*|dynamicchannels)\Z", re.IGNORECASE)
 _MODULE = re.compile(
     r"(?:supportedmodules|connectedmodules|m[1-9][0-9]*(?:moduleinfo|comments|fixedobjects|subextends"
     r"|(?:fixed|subext)[0-9a-f]{1,4}(?:sub[0-9a-f]{1,2})?))\Z",
@@ -131,7 +130,7 @@ name leaves that section missing.""",
 )
 def unknown_sections(ctx: Context) -> Iterator[Finding]:
     for raw in ctx.device.other_sections:
-        if _OBJECT_LIKE.match(raw.name) or _OTHER_KNOWN.match(raw.name):
+        if _OBJECT_LIKE.match(raw.name) or keys.OTHER_SECTION.match(raw.name):
             continue  # object-like leftovers were reported by the reader (EDS103/EDS104)
         message = f"[{raw.name}]: not a CiA 306 section{_suggest(raw.name, _KNOWN_SECTIONS)}"
         yield ctx.report("EDS004", message, ctx.at(raw))

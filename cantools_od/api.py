@@ -11,7 +11,7 @@ from pydantic import ValidationError
 from .eds.format import IntStyle
 from .eds.reader import read_bytes
 from .model import Device
-from .sniff import NotADeviceDescription, has_section, sniff, xml_refusal
+from .sniff import NotADeviceDescription, sniff, xml_refusal
 from .xdd import is_xml
 
 Format = Literal["eds", "dcf", "json", "xdd", "xdc"]
@@ -45,59 +45,21 @@ def loads(data: bytes | str, node_id: int | None = None, source: str = "", fmt: 
     if kind == "xml":
         raise xml_refusal(source)
     if fmt == "json" or (fmt is None and kind == "json"):
-        return _json_model(raw, source, node_id, strict=fmt == "json")
+        return _json_model(raw, source, node_id)
     dcf = True if fmt == "dcf" else None
     return read_bytes(raw, source, node_id=node_id, dcf=dcf)
 
 
-def _json_model(raw: bytes, source: str, node_id: int | None, strict: bool) -> Device:
-    _check_model_keys(raw)
+def _json_model(raw: bytes, source: str, node_id: int | None) -> Device:
+    """A model `sniff` recognised (or JSON the caller insists on): JSN001 when it does not validate."""
     try:
         device = Device.model_validate_json(raw)
     except ValidationError as error:
-        if strict or not _not_json(error):
-            raise _not_a_model(error) from None
-        if not has_section(raw):  # "{", invalid JSON and no section: neither
-            raise _not_a_model(error) from None
-        return read_bytes(raw, source, node_id=node_id)  # an EDS that happens to start with "{"
+        raise _not_a_model(error) from None
     device.source = source or device.source
     if node_id is not None:
         device.node_id = node_id
     return device
-
-
-def _check_model_keys(raw: bytes) -> None:
-    """JSON that is no model at all (an array, a number, `{"name": ...}` of some other tool) is no
-    device description (EDS000); a model with keys it does not have is a broken model (JSN001)."""
-    import json  # only for JSON input: start-up counts
-
-    try:
-        parsed = json.loads(raw)
-    except ValueError:
-        return  # not JSON: the caller decides (an EDS starting with "{", or JSN001)
-    if not isinstance(parsed, dict):
-        raise NotADeviceDescription(
-            f"JSON that is not a cantools-od model (a {_json_kind(parsed)})", what="a device description"
-        )
-    known = Device.model_fields.keys()
-    if not parsed or not known & parsed.keys():
-        keys = ", ".join(sorted(parsed)[:5]) or "none"
-        raise NotADeviceDescription(
-            f"JSON that is not a cantools-od model (its keys: {keys})", what="a device description"
-        )
-    unknown = sorted(parsed.keys() - known)
-    if unknown:
-        raise NotADeviceDescription(
-            f"unknown keys: {', '.join(unknown[:5])}", what="a cantools-od model", code="JSN001"
-        )
-
-
-def _json_kind(value: object) -> str:
-    return {list: "list", str: "string", bool: "boolean"}.get(type(value), "number" if value is not None else "null")
-
-
-def _not_json(error: ValidationError) -> bool:
-    return any(detail["type"] == "json_invalid" for detail in error.errors())
 
 
 def _not_a_model(error: ValidationError) -> NotADeviceDescription:

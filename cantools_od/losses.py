@@ -5,7 +5,12 @@ never drops something without a word.
 
 from __future__ import annotations
 
-from .model import Device
+from typing import Any
+
+from .eds.format import twos_complement
+from .eds.hints import Hints
+from .eds.keys import DEVICE_INFO_KEYS, FILE_INFO_KEYS
+from .model import Device, Section
 
 # Sections compared, their names as a user knows them, and the formats that keep each.
 _SECTIONS: tuple[tuple[str, str, str], ...] = (
@@ -39,7 +44,52 @@ def losses(device: Device, written: Device, fmt: str) -> list[str]:
     if dropped:
         names = ", ".join(f"[{name}]" for name in dropped[:5]) + (" ..." if len(dropped) > 5 else "")
         found.append(f"{names} {'is' if len(dropped) == 1 else 'are'} not kept in {fmt.upper()}")
-    return found + _compact_losses(device, written, fmt.upper())
+    return found + _key_losses(device, written, fmt.upper()) + _compact_losses(device, written, fmt.upper())
+
+
+def _key_losses(device: Device, written: Device, fmt: str) -> list[str]:
+    """The [FileInfo] and [DeviceInfo] keys (LastEDS, CompactPDO, ...) `written` does not give back, and the signed
+    values written as two's-complement hex (`0xFFFF` for -1), which python-canopen reads as the unsigned number
+    from an EDS and as -1 from one written from a format that keeps only the number."""
+    found = []
+    for label, old, new, table in (
+        ("[FileInfo]", device.file_info, written.file_info, FILE_INFO_KEYS),
+        ("[DeviceInfo]", device.device_info, written.device_info, DEVICE_INFO_KEYS),
+    ):
+        lost = [spelling for spelling, attr, _ in table.values() if _value(old, attr) != _value(new, attr)]
+        if lost:
+            keys = f"key{'s' if len(lost) > 1 else ''} {', '.join(lost)}"
+            found.append(f"{label} {keys} {'are' if len(lost) > 1 else 'is'} not kept in {fmt} (EDS and DCF keep them)")
+    if fmt not in ("EDS", "DCF"):
+        signed = _twos_complement_hex(device)
+        if signed:
+            found.append(
+                f"the two's-complement hex of {', '.join(signed)} is not kept in {fmt}: an EDS written from it says"
+                " the negative number, which python-canopen reads otherwise than the hex (EDS and DCF keep it)"
+            )
+    return found
+
+
+def _value(section: Section, attr: str) -> Any:
+    """A key's value; a baud rate not listed is one not supported, as every reader takes it."""
+    if attr.startswith("baud_rates."):
+        return bool(getattr(section, "baud_rates", {}).get(int(attr.split(".")[1])))
+    return getattr(section, attr, None)
+
+
+def _twos_complement_hex(device: Device) -> list[str]:
+    """The entries (`60C0`, `60C2sub2`) whose DefaultValue or ParameterValue the file wrote as two's-complement hex."""
+    hints = Hints.of(device)
+    found = []
+    for index, obj in device.objects.items():
+        for subindex, var in obj.subs.items() if obj.subs else [(None, obj)]:
+            for key, value in (("DefaultValue", var.default), ("ParameterValue", var.parameter_value)):
+                if not isinstance(value, int) or isinstance(value, bool) or value >= 0:
+                    continue
+                if twos_complement(hints.text(var, key), value, device.entry_type(var, obj)):
+                    found.append(f"{index:04X}" + (f"sub{subindex:X}" if subindex is not None else ""))
+                    break
+    return found
 
 
 def _compact_losses(device: Device, written: Device, fmt: str) -> list[str]:

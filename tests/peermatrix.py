@@ -26,6 +26,7 @@ import canopen
 from sharedcache import cached_for_file
 
 _DCF_TOOLS = importlib.metadata.version("dcf-tools")
+NODE_ID = 5  # the node-ID peers read the files with, besides none
 FIELDS = ("name", "data_type", "access_type", "default", "min", "max", "pdo_mappable", "value")
 
 Reading = dict[tuple[int, int], dict[str, Any]]
@@ -88,6 +89,54 @@ def _canopen_reading(path: Path, node_id: int | None) -> Reading | str:
         for subindex, var in subs.items():
             out[(index, subindex)] = _variable(var)
     return out
+
+
+# What python-canopen reads of a file besides its entries: the [DeviceInfo] it keeps (`od.device_information`).
+DEVICE_INFO = ("vendor_name", "vendor_number", "product_name", "product_number", "revision_number", "order_code",
+    "allowed_baudrates", "simple_boot_up_master", "simple_boot_up_slave", "granularity", "dynamic_channels_supported",
+    "group_messaging", "nr_of_RXPDO", "nr_of_TXPDO", "LSS_supported")  # fmt: skip
+
+
+def file_reading(path: Path, node_id: int | None) -> dict[str, Any] | str:
+    """python-canopen's reading of `path` besides its entries: the node-ID and bit rate (its [DeviceComissioning]),
+    [DeviceInfo] and [Comments]; or the reason it could not read the file. Made once a run for the same bytes."""
+    parts = (canopen.__version__, repr(node_id))
+    return cached_for_file("python-canopen-file", path, parts, lambda: _file_reading(path, node_id))
+
+
+def _file_reading(path: Path, node_id: int | None) -> dict[str, Any] | str:
+    od = canopen_od(path, node_id)
+    if isinstance(od, str):
+        return od
+    info = od.device_information
+    return {
+        "node_id": od.node_id,
+        "bitrate": od.bitrate,
+        "comments": od.comments,
+        **{f"[DeviceInfo] {name}": getattr(info, name, None) for name in DEVICE_INFO},
+    }
+
+
+def peer_changes(before: Path, after: Path, node_ids: tuple[int | None, ...] = (None, NODE_ID)) -> list[str]:
+    """The oracle of what peers read: every difference between python-canopen's reading of `before` and of `after`
+    (every entry's name, type, access, default, limits, PDO flag and value; node-ID, bit rate, [DeviceInfo]), read
+    without a node-ID and with one. A file it could not read before constrains nothing; one it no longer reads is a
+    difference."""
+    found: list[str] = []
+    for node_id in node_ids:
+        old, new = canopen_reading(before, node_id), canopen_reading(after, node_id)
+        old_file, new_file = file_reading(before, node_id), file_reading(after, node_id)
+        if isinstance(old, str) or isinstance(old_file, str):
+            continue
+        at = f"node-ID {node_id}" if node_id is not None else "no node-ID"
+        if isinstance(new, str) or isinstance(new_file, str):
+            found.append(f"{at}: python-canopen no longer reads the file: {new if isinstance(new, str) else new_file}")
+            continue
+        found += [f"{at}: {d}" for d in differences(old, new)]
+        found += [
+            f"{at}: {k}: {v!r} -> {new_file.get(k)!r}" for k, v in old_file.items() if not _same(v, new_file.get(k))
+        ]
+    return found
 
 
 def _variable(var: Any) -> dict[str, Any]:
@@ -180,7 +229,6 @@ def dcfchk_verdict(path: Path, node_id: int | None = None) -> str | None:
 
 # --- the outputs judged: what `fmt`, `convert` (EDS -> DCF) and `lint --fix` write -------------------------------
 
-NODE_ID = 5
 OUTPUT_NAMES = ("fmt", "convert-dcf", "lint-fix")
 
 
@@ -248,7 +296,6 @@ class Judgement:
 class FileResult:
     name: str
     judgements: dict[tuple[str, str], Judgement] = field(default_factory=dict)  # (output, peer) -> verdict
-    data_types: dict[tuple[int, int], Any] = field(default_factory=dict)  # as python-canopen read the original
 
 
 def _stated_value(d: Difference, before: Reading) -> bool:
@@ -319,9 +366,6 @@ def judge(path: Path, folder: Path, full: bool = True) -> FileResult:
         else:
             after = dcfchk_verdict(target)
         result.judgements[(output, "dcfchk")] = Judgement(before, after)
-    reading = source.canopen(None)
-    if not isinstance(reading, str):
-        result.data_types = {key: fields.get("data_type") for key, fields in reading.items()}
     return result
 
 

@@ -32,6 +32,10 @@ SAID = {
 }
 
 
+def files_of_corpus() -> list[Path]:
+    return sorted(p for p in CORPUS.iterdir() if p.suffix.lower() in (".eds", ".dcf")) if CORPUS.is_dir() else []
+
+
 def files() -> list[Path]:
     found = sorted(EXAMPLES.glob("*.eds"))
     for folder in (CORPUS, CORPUS.parent / "xdd"):
@@ -89,3 +93,44 @@ def test_convert_says_what_xdd_cannot_hold(tmp_path: Path, monkeypatch: pytest.M
     assert load(tmp_path / "drive.dcf").comments is not None
     same = CliRunner().invoke(main, ["convert", "drive.dcf", "-o", "copy.dcf"])
     assert same.exit_code == 0 and "warning" not in same.output
+
+
+# [FileInfo]/[DeviceInfo] keys an EDS -> XDD -> EDS round trip was seen to drop without a word (issue 39).
+INFO_KEYS = {"LastEDS": ("file_info", "last_eds"), "CompactPDO": ("device_info", "compact_pdo"),
+             "DynamicChannelsSupported": ("device_info", "dynamic_channels_supported")}  # fmt: skip
+
+
+def test_info_keys_an_xdd_does_not_give_back_are_named() -> None:
+    """Every corpus EDS through XDD and back to EDS: each of LastEDS, CompactPDO and DynamicChannelsSupported that the
+    EDS written back lacks (or holds otherwise) is named by the XDD conversion's warnings."""
+    files = [p for p in files_of_corpus() if p.suffix.lower() == ".eds"]
+    if not files:
+        pytest.skip("../shared/eds-corpus is absent")
+    unsaid, lost = [], 0
+    for path in files:
+        try:
+            device = load(path)
+        except NotADeviceDescription:
+            continue
+        written = loads(dumps(device, "xdd", "canonical"), fmt="xdd")
+        back = loads(dumps(written, "eds", "canonical"))
+        said = " ".join(losses(device, written, "xdd"))
+        for key, (section, attr) in INFO_KEYS.items():
+            before, after = getattr(getattr(device, section), attr), getattr(getattr(back, section), attr)
+            if before is not None and before != after:
+                lost += 1
+                if key not in said:
+                    unsaid.append(f"{path.name}: {key}={before!r} comes back as {after!r}")
+    assert lost >= 40, "too few files lose a key for the check to prove anything"
+    assert unsaid == []
+
+
+def test_convert_names_the_info_keys_xdd_drops(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    text = (EXAMPLES / "cia402_drive.eds").read_text()
+    text = text.replace("[FileInfo]\n", "[FileInfo]\nLastEDS=old.eds\n")  # CompactPDO=0 it has
+    (tmp_path / "drive.eds").write_text(text)
+    result = CliRunner().invoke(main, ["convert", "drive.eds", "-o", "drive.xdd"])
+    assert result.exit_code == 0, result.output
+    assert "warning: [FileInfo] keys FileRevision, LastEDS, EDSVersion are not kept in XDD" in result.output
+    assert "warning: [DeviceInfo] key CompactPDO is not kept in XDD (EDS and DCF keep them)" in result.output

@@ -62,14 +62,16 @@ def test_nodeid_formula_is_evaluated_by_python_canopen(tmp_path: Path) -> None:
     assert dcfchk_verdict(canonical, NODE_ID) is None
 
 
-def test_signed_hex_default_is_written_so_python_canopen_reads_it_right(tmp_path: Path) -> None:
-    """CiA 306 reads 0xFFFF of an INTEGER16 as -1 (two's complement); python-canopen reads the hex as 65535.
-    The canonical `-1` is read as -1 by both."""
+def test_signed_hex_default_keeps_the_hex_python_canopen_reads(tmp_path: Path) -> None:
+    """CiA 306 reads 0xFFFF of an INTEGER16 as -1 (two's complement); python-canopen reads the hex as 65535. The
+    canonical form keeps the author's hex: `-1` would make python-canopen read another value than it did."""
     original = tmp_path / "original.eds"
-    original.write_text(device_file("DefaultValue=0xFFFF\nPDOMapping=0", "0x0003"))
+    original.write_text(device_file("DefaultValue=0xFFFF\nLowLimit=0xFF00\nPDOMapping=0", "0x0003"))
     canonical = tmp_path / "canonical.eds"
-    canonical.write_bytes(dumps(loads(original.read_bytes()), "eds", style="canonical"))
+    text = dumps(loads(original.read_bytes()), "eds", style="canonical").decode()
+    assert "DefaultValue=0xFFFF\n" in text and "LowLimit=0xFF00\n" in text
+    canonical.write_text(text)
     before, after = canopen_reading(original, None), canopen_reading(canonical, None)
     assert not isinstance(before, str) and not isinstance(after, str)
-    assert before[(0x2000, 0)]["default"] == 0xFFFF
-    assert after[(0x2000, 0)]["default"] == -1
+    assert before[(0x2000, 0)]["default"] == after[(0x2000, 0)]["default"] == 0xFFFF
+    assert differences(before, after) == []

@@ -98,9 +98,11 @@ def read_or_refuse(data: bytes | str, fmt: Fmt | None = None, source: str = "") 
     try:
         return loads(raw, fmt=fmt, source=source)
     except NotADeviceDescription as refusal:
-        # Refused only for what the sniffing promises: NUL bytes, nothing but blanks, no section, a JSON array.
+        # Refused only for what the sniffing promises: NUL bytes, nothing but blanks, no section, a JSON array, or
+        # sections of which none is CiA 306's (a file's own such as [FileInfo], an object's such as [1000]).
         section = re.search(rb"^[ \t]*\[", raw, re.MULTILINE)
-        assert b"\0" in raw or not raw.strip() or not section or "JSON" in str(refusal), refusal
+        cia306 = re.search(rb"^[ \t]*\[[ \t]*(?:FileInfo|DeviceInfo|[0-9A-F]{4})[ \t]*\]", raw, re.MULTILINE | re.I)
+        assert b"\0" in raw or not raw.strip() or not section or "JSON" in str(refusal) or not cia306, refusal
         return None
 
 

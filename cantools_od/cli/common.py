@@ -118,7 +118,9 @@ def force_option(function: click.decorators.FC) -> click.decorators.FC:
 
 def errors_to_fix(device: Device) -> str | None:
     """`N errors to fix first` when reading found errors: a command that would carry the content
-    on (fmt, convert, ids) then does nothing rather than lose or spread what it could not read."""
+    on (fmt, convert, ids, the editor's formatting) then does nothing rather than lose or spread what it
+    could not read. The errors of lint's rules do not count: what such a file says is carried on as it is
+    (the input's error is lint's to report, and fmt changes nothing peers read)."""
     count = sum(d.severity is Severity.ERROR for d in device.diagnostics)
     return f"{count} error{'s' if count != 1 else ''} to fix first" if count else None
 

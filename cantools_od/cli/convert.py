@@ -35,7 +35,8 @@ def command(source: str, output: str, node_id: int | None) -> None:
     """Convert SOURCE to OUTPUT between EDS, DCF, XDD (.xdd, .xpd), XDC and JSON, by their
     extensions. The same format in and out keeps the original
     layout; a DCF made from an EDS (an XDC from an XDD) needs --node-id. A SOURCE
-    with errors is not converted (exit 1)."""
+    the reader reports an error in (a value or section it cannot read) is not
+    converted (exit 1); the errors of lint's rules are lint's to report."""
     from ..api import dumps, format_for, loads
 
     check_extension(source, "input")

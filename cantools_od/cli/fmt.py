@@ -36,8 +36,10 @@ def command(
     """Rewrite FILES in canonical form (CiA 306 key order and spelling, sorted
     sections, integers by the radix style, LF line ends), spelled so that every
     peer reader reads what the original said. A file is written only when its
-    content changes, and never when it has errors (exit 1). A file that cannot
-    be read is reported (exit 2) and every other file still formatted."""
+    content changes, and never when the reader reports an error in it (a value
+    or section it cannot read, which the canonical form could not carry; exit
+    1); the errors of lint's rules are lint's to report. A file that cannot be
+    read is reported (exit 2) and every other file still formatted."""
     from ..lint.config import load_int_style
 
     tasks = []

@@ -72,9 +72,10 @@ def _written_radix(hint: str | None) -> tuple[Radix, int]:
 
 
 def reads_hint(value: object, radix: Radix) -> bool:
-    """Whether formatting `value` with `radix` looks at the text it was read from (`hint`): an integer only to
-    keep its radix as written, a REAL or TIME value always. The writer asks for the text only then."""
-    return radix is Radix.AS_WRITTEN or isinstance(value, float | TimeValue)
+    """Whether formatting `value` with `radix` looks at the text it was read from (`hint`): an integer to keep its
+    radix as written or a negative one its two's complement, a REAL or TIME value always. The writer asks for the
+    text only then."""
+    return radix is Radix.AS_WRITTEN or isinstance(value, float | TimeValue) or (isinstance(value, int) and value < 0)
 
 
 def format_int(value: int, radix: Radix, width: int, hint: str | None = None) -> str:
@@ -138,6 +139,8 @@ def format_value(
     if isinstance(value, bool):
         return "1" if value else "0"
     if isinstance(value, int):
+        if value < 0 and twos_complement(hint, value, dtype):
+            return hint.strip() if hint is not None else ""
         unsigned = dtype is not None and dtype.kind is ValueKind.UNSIGNED and value >= 0
         width = (dtype.bits or 0) // 4 if unsigned and dtype is not None else 0
         return format_int(value, radix, width, hint)
@@ -150,6 +153,19 @@ def format_value(
     if dialect is Dialect.LELY and dtype is not None and dtype.kind is ValueKind.STRING:
         return quote(value)
     return value
+
+
+def twos_complement(hint: str | None, value: int, dtype: DataType | None) -> bool:
+    """Whether the author wrote negative `value` as its type's two's complement in hex (`0xFFFF` for -1 of an
+    INTEGER16): python-canopen reads such a default or value as the unsigned number, so it keeps that spelling."""
+    found = _HEX_TEXT.fullmatch(hint.strip()) if hint is not None else None
+    bits = dtype.bits if dtype is not None else None
+    return (
+        found is not None
+        and "-" not in found.group(0)
+        and bits is not None
+        and int(found.group(1), 16) == value + (1 << bits)
+    )
 
 
 def _real(value: float, dtype: DataType | None, dialect: Dialect, hint: str | None) -> str:

@@ -89,7 +89,7 @@ def _header_starts(text: AnyStr) -> Iterator[int]:
         position = find(bracket, position + 1)
 
 
-def _header_names(text: AnyStr) -> Iterator[AnyStr]:
+def header_names(text: AnyStr) -> Iterator[AnyStr]:
     """The text between "[" and "]" (or the line end) of each header line."""
     name = _NAME if isinstance(text, str) else _NAME_BYTES
     bracket = "[" if isinstance(text, str) else b"["
@@ -180,7 +180,7 @@ def repeated_section_names(text: str | bytes) -> set[str]:
         if len(set(folded)) == len(folded):
             return set()
     names: Iterator[str] = (
-        _header_names(text) if isinstance(text, str) else (n.decode("utf-8", "replace") for n in _header_names(text))
+        header_names(text) if isinstance(text, str) else (n.decode("utf-8", "replace") for n in header_names(text))
     )
     seen: set[int] = set()
     repeated: set[str] = set()

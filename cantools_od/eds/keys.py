@@ -6,6 +6,7 @@ Key names are matched case-insensitively and without blanks
 
 from __future__ import annotations
 
+import re
 from enum import Enum
 from functools import lru_cache
 
@@ -146,3 +147,30 @@ OBJECT_LISTS = {
 }
 COMMISSIONING = "DeviceComissioning"
 COMMISSIONING_SPELLINGS = {"devicecomissioning", "devicecommissioning"}
+SECTION_SPELLINGS = {
+    "fileinfo": FILE_INFO,
+    "deviceinfo": DEVICE_INFO,
+    "dummyusage": DUMMY_USAGE,
+    "comments": COMMENTS,
+    **{name: spelling for name, (spelling, _) in OBJECT_LISTS.items()},
+    **{name: COMMISSIONING for name in COMMISSIONING_SPELLINGS},
+}
+"""The sections of a file's own (no object's), by their name in lower case, and how CiA 306 spells each."""
+OBJECT_SECTION = re.compile(
+    r"([0-9a-fA-F]{1,4})(?:[sS][uU][bB]([0-9a-fA-F]{1,3})|(name|value|denotation|objectlinks))?\Z",
+    re.IGNORECASE,
+)
+"""An object's section (`1000`), a sub-object's (`1018sub1`) or a compact one's (`2000Name`): index, sub-index,
+compact kind."""
+MODULE_SECTION = re.compile(r"(?:m\d+\D.*|supportedmodules|connectedmodules)\Z", re.IGNORECASE)
+"""The module sections of a modular device (CiA 306 §6)."""
+OTHER_SECTION = re.compile(r"(?:tools|tool[1-9][0-9]*|dynamicchannels)\Z", re.IGNORECASE)
+"""CiA 306 sections the model keeps as they are: the tool list and dynamic channels."""
+
+
+def is_file_section(name: str) -> bool:
+    """Whether `name` (as between the brackets) is a CiA 306 section of the file's own, of its modules, or of
+    its tools and dynamic channels."""
+    name = name.strip()
+    known = name.lower() in SECTION_SPELLINGS
+    return known or MODULE_SECTION.match(name) is not None or OTHER_SECTION.match(name) is not None

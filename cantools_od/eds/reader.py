@@ -34,12 +34,7 @@ from .storage import PREFIX, read_storage_groups
 from .typed_values import store, type_values
 from .values import parse_int, parse_value
 
-_OBJECT_SECTION = re.compile(
-    r"([0-9a-fA-F]{1,4})(?:[sS][uU][bB]([0-9a-fA-F]{1,3})|(name|value|denotation|objectlinks))?\Z",
-    re.IGNORECASE,
-)
 _HEX4 = re.compile(r"[0-9a-fA-F]{4}\Z")
-_MODULE_SECTION = re.compile(r"(?:m\d+\D.*|supportedmodules|connectedmodules)\Z", re.IGNORECASE)
 _SUB_DEFAULTS = field_defaults(SubObject)
 _OBJECT_DEFAULTS = field_defaults(Object)
 STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group comment: a scan spares a walk
@@ -141,7 +136,7 @@ class _Build:
         device, report = self.device, self.report
         _check_header(section, report)
         guessing = self.repeated is None
-        match = _OBJECT_SECTION.match(section.name)
+        match = keys.OBJECT_SECTION.match(section.name)
         if match is None:
             self.first_time(section)
             _read_file_section(device, section, report)
@@ -305,16 +300,6 @@ def _check_header(section: ini.IniSection, report: Report) -> None:
         report.error("EDS101", f"not a key=value entry: {text[:60]!r}", line, 1)
 
 
-_SECTION_SPELLINGS = {
-    "fileinfo": keys.FILE_INFO,
-    "deviceinfo": keys.DEVICE_INFO,
-    "dummyusage": keys.DUMMY_USAGE,
-    "comments": keys.COMMENTS,
-    **{name: spelling for name, (spelling, _) in keys.OBJECT_LISTS.items()},
-    **{name: keys.COMMISSIONING for name in keys.COMMISSIONING_SPELLINGS},
-}
-
-
 def _read_file_section(device: Device, section: ini.IniSection, report: Report) -> None:
     name = section.name.lower()
     part: Section | None = None
@@ -332,10 +317,10 @@ def _read_file_section(device: Device, section: ini.IniSection, report: Report) 
     elif name == "comments":
         part = device.comments = _comments(section, report)
     if part is not None:
-        if part.origin is not None and section.name != _SECTION_SPELLINGS[name]:
+        if part.origin is not None and section.name != keys.SECTION_SPELLINGS[name]:
             # "" is the section's own name, as for comments; a new dict, as origins may share an empty one
             part.origin.spelled = {**part.origin.spelled, "": section.name}
-    elif _MODULE_SECTION.match(section.name):
+    elif keys.MODULE_SECTION.match(section.name):
         device.module_sections.append(raw_section(section, report))
     else:
         device.other_sections.append(raw_section(section, report))

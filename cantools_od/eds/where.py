@@ -8,7 +8,7 @@ from collections.abc import Callable
 from ..model import Device, Diagnostic, Severity
 from . import ini
 from .decode import decode
-from .reader import _OBJECT_SECTION
+from .keys import OBJECT_SECTION
 
 
 def object_at(data: bytes) -> Callable[[int], int | None]:
@@ -26,7 +26,7 @@ def object_at(data: bytes) -> Callable[[int], int | None]:
 
 
 def _index(name: str) -> int | None:
-    match = _OBJECT_SECTION.match(name)
+    match = OBJECT_SECTION.match(name)
     return int(match.group(1), 16) if match else None
 
 

@@ -13,6 +13,7 @@ from .dialect import text_dialect
 from .format import CANONICAL, IntStyle, Radix, format_key, format_value, reads_hint
 from .hints import NO_HINTS, Hints
 from .keys import COMMISSIONING, COMMISSIONING_KEYS, DEVICE_INFO_KEYS, FILE_INFO_KEYS, OBJECT_KEYS, KeySpec, Kind
+from .peer_names import peer_spelling
 from .storage import storage_comments
 
 
@@ -62,9 +63,9 @@ def sections(
     if device.dummy_usage is not None:
         usage = device.dummy_usage
         entries = {f"Dummy{index:04X}": "1" if on else "0" for index, on in sorted(usage.enabled.items())}
-        out.append(_with_extra("DummyUsage", entries, usage))
+        out.append(_with_extra("DummyUsage", entries, usage, style))
     if device.comments is not None:
-        out.append(comments_section(device.comments))
+        out.append(comments_section(device.comments, style))
     for name, attr in (
         ("MandatoryObjects", device.mandatory_objects),
         ("OptionalObjects", device.optional_objects),
@@ -77,13 +78,13 @@ def sections(
                 else {}
             )
             entries.update({str(pos): f"0x{index:04X}" for pos, index in sorted(attr.entries.items())})
-            out.append(_with_extra(name, entries, attr))
+            out.append(_with_extra(name, entries, attr, style))
     written = _explicit_indices(device)
     for index, obj in device.objects.items():
         if index in written:
             out.extend(_object_sections(device, obj, style))
     for raw in [*device.module_sections, *device.other_sections]:
-        out.append(_with_extra(raw.name, dict(raw.entries), raw))
+        out.append(_with_extra(raw.name, dict(raw.entries), raw, style))
     return out
 
 
@@ -106,19 +107,30 @@ def _explicit_indices(device: Device) -> set[int]:
     return written | changed | {index for index in partners if index is not None and index in device.objects}
 
 
-def comments_section(comments: Comments) -> OutSection:
+def comments_section(comments: Comments, style: _Style | None = None) -> OutSection:
     """[Comments]: `Lines`, then `Line1`... as numbered, then the keys kept as written."""
     entries = {"Lines": format_key("Lines", comments.line_count)} if comments.line_count is not None else {}
     entries.update({f"Line{n}": text for n, text in comments.lines.items()})
-    return _with_extra("Comments", entries, comments)
+    return _with_extra("Comments", entries, comments, style)
 
 
-def _with_extra(name: str, entries: dict[str, str], section: Section) -> OutSection:
+def _with_extra(name: str, entries: dict[str, str], section: Section, style: _Style | None = None) -> OutSection:
+    """The section with its extra keys and comments; in canonical output (a `style` not `as_written`), a name
+    python-canopen looks up keeps the file's spelling: respelled, it would read other values."""
+    canonical = style is not None and not style.as_written
+    spelled = section.origin.spelled if canonical and section.origin is not None else {}
+    if spelled:
+        name = peer_spelling(name, spelled.get(""))
+        entries = {peer_spelling(key, spelled.get(key)): text for key, text in entries.items()}
     for key, text in section.extra.items():
         entries.setdefault(key, text)
     if isinstance(section, Variable) and section.canopennode is not None:
-        return OutSection(name, entries, storage_comments(section, list(entries)))
-    return OutSection(name, entries, dict(section.comments))
+        comments = storage_comments(section, list(entries))
+    else:
+        comments = dict(section.comments)
+    if spelled:
+        comments = {peer_spelling(key, spelled.get(key)) if key else key: lines for key, lines in comments.items()}
+    return OutSection(name, entries, comments)
 
 
 def _keyed(
@@ -135,7 +147,7 @@ def _keyed(
             entries[spelling] = format_key(spelling, value, *style.radix_and_hint(model, spelling, value))
         elif _kept_empty(model, spelling, kind, style):
             entries[spelling] = ""
-    return _with_extra(name, entries, model)
+    return _with_extra(name, entries, model, style)
 
 
 def _kept_empty(section: Section, key: str, kind: Kind, style: _Style) -> bool:
@@ -179,7 +191,7 @@ def _variable_entries(device: Device, var: Variable, owner: Object, style: _Styl
 
 def _object_sections(device: Device, obj: Object, style: _Style) -> list[OutSection]:
     name = f"{obj.index:04X}"
-    out = [_with_extra(name, _variable_entries(device, obj, obj, style), obj)]
+    out = [_with_extra(name, _variable_entries(device, obj, obj, style), obj, style)]
     compact: dict[str, dict[str, str]] = {"Name": {}, "Value": {}, "Denotation": {}}
     dtype = device.entry_type(obj, obj)
     for subindex, sub in obj.subs.items():
@@ -187,7 +199,7 @@ def _object_sections(device: Device, obj: Object, style: _Style) -> list[OutSect
             _compact_entries(device, obj, subindex, sub, compact, dtype, style)
             continue
         # An edited compact sub-object no longer follows its parent: it gets a section of its own.
-        out.append(_with_extra(f"{name}sub{subindex:X}", _variable_entries(device, sub, obj, style), sub))
+        out.append(_with_extra(f"{name}sub{subindex:X}", _variable_entries(device, sub, obj, style), sub, style))
     for suffix, entries in compact.items():
         if entries:
             out.append(OutSection(f"{name}{suffix}", {"NrOfEntries": str(len(entries)), **entries}))

@@ -17,7 +17,9 @@ declare(
     "Not an EDS/DCF file",
     """
 The file holds no device description: binary data (a NUL byte), nothing but blank space, text
-without a single `[section]` header, or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
+without a single `[section]` header, INI text of another tool (`setup.cfg`, `.gitconfig`: no section
+CiA 306 knows, neither a file's own such as `[FileInfo]` nor an object's such as `[1000]`), JSON that
+is no model (`[]`, `{"name": ...}`), or XML (CiA 311 XDD/XDC files are not CiA 306 text). Every
 command refuses such a file with this one line and exit code 2, and never writes to it: a
 formatter that read it as an empty device would otherwise replace it with one. The line names what
 the file's name promised: a binary `device.xdd` is "not an XDD/XDC (CiA 311) file". `lint` reports a

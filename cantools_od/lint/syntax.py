@@ -10,6 +10,7 @@ from collections.abc import Iterable, Iterator
 from typing import NamedTuple
 
 from ..eds import keys
+from ..eds.peer_names import python_canopen_reads
 from ..model import Device, Location, Section, Severity
 from ..model.source import location
 from .common import OBJECT_FIELDS, explicit_objects, explicit_vars, file_start, invalid, present, where
@@ -24,7 +25,6 @@ LATER_OBJECT_KEYS = ("SRDOMapping", "InvertedSRAD")
 EXTENSION_KEYS = ("Factor", "Unit", "Description", "StorageLocation")  # python-canopen; see portability
 _OBJECT_KEYS = (*OBJECT_FIELDS, *LATER_OBJECT_KEYS, *EXTENSION_KEYS)
 _OBJECT_LIKE = re.compile(r"[0-9a-f]{1,4}(?:sub[0-9a-f]+|name|value|denotation|objectlinks)?\Z", re.IGNORECASE)
-_OTHER_KNOWN = re.compile(r"(?:tools|tool[1-9][0-9]*|dynamicchannels)\Z", re.IGNORECASE)
 _MODULE = re.compile(
     r"(?:supportedmodules|connectedmodules|m[1-9][0-9]*(?:moduleinfo|comments|fixedobjects|subextends"
     r"|(?:fixed|subext)[0-9a-f]{1,4}(?:sub[0-9a-f]{1,2})?))\Z",
@@ -130,7 +130,7 @@ name leaves that section missing.""",
 )
 def unknown_sections(ctx: Context) -> Iterator[Finding]:
     for raw in ctx.device.other_sections:
-        if _OBJECT_LIKE.match(raw.name) or _OTHER_KNOWN.match(raw.name):
+        if _OBJECT_LIKE.match(raw.name) or keys.OTHER_SECTION.match(raw.name):
             continue  # object-like leftovers were reported by the reader (EDS103/EDS104)
         message = f"[{raw.name}]: not a CiA 306 section{_suggest(raw.name, _KNOWN_SECTIONS)}"
         yield ctx.report("EDS004", message, ctx.at(raw))
@@ -291,26 +291,12 @@ class Spelling(NamedTuple):
         """Safe only for a name python-canopen does not look up: respelling one it does makes it read what it
         did not read before (a [DeviceInfo] count, a NodeID, an object's default), so that fix is unsafe."""
         what = "section" if self.header else "key"
-        return Fix(f"write the {what} as {self.canonical}", not _python_canopen_reads(self.canonical), self._respell)
+        return Fix(f"write the {what} as {self.canonical}", not python_canopen_reads(self.canonical), self._respell)
 
     def _respell(self, device: Device) -> None:
         from ..eds.preserve import respell
 
         respell(device, self.where.line, self.where.column, self.written, self.canonical)
-
-
-# The names python-canopen looks up, case-sensitively, as it spells them (its `import_od`): sections, then keys.
-_PYTHON_CANOPEN_NAMES = frozenset({"DeviceInfo", "DeviceComissioning", "Comments", "DummyUsage", "Lines", "NodeID",
-    "Baudrate", "ParameterName", "ObjectType", "DataType", "AccessType", "DefaultValue", "ParameterValue", "LowLimit",
-    "HighLimit", "PDOMapping", "CompactSubObj", "NrOfEntries", "Factor", "Description", "Unit", "StorageLocation",
-    "VendorName", "VendorNumber", "ProductName", "ProductNumber", "RevisionNumber", "OrderCode", "SimpleBootUpMaster",
-    "SimpleBootUpSlave", "Granularity", "DynamicChannelsSupported", "GroupMessaging", "NrOfRXPDO", "NrOfTXPDO",
-    "LSS_Supported"})  # fmt: skip
-_PYTHON_CANOPEN_PATTERN = re.compile(r"(?:BaudRate_[0-9]+|Line[0-9]+|Dummy[0-9A-F]{4}|[0-9A-F]{4}(?:sub[0-9A-F]+)?)\Z")
-
-
-def _python_canopen_reads(name: str) -> bool:
-    return name in _PYTHON_CANOPEN_NAMES or _PYTHON_CANOPEN_PATTERN.match(name) is not None
 
 
 def spellings(ctx: Context) -> Iterator[Spelling]:

@@ -55,7 +55,8 @@ def test_messages() -> None:
     assert messages("[DeviceInfo]\nBaudrate_100=1\n", "EDS003") == [
         "[DeviceInfo] Baudrate_100: not a CiA 306 key of this section; did you mean BaudRate_1000 or BaudRate_10?"
     ]
-    assert messages("[DeviceInfos]\nX=1\n", "EDS004") == [
+    # a file of this section alone is no device description (EDS000): another section makes it one
+    assert messages("[FileInfo]\nFileName=t.eds\n[DeviceInfos]\nX=1\n", "EDS004") == [
         "[DeviceInfos]: not a CiA 306 section; did you mean DeviceInfo?"
     ]
 

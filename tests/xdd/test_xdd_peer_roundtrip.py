@@ -1,7 +1,6 @@
 """Every corpus EDS/DCF through XDD (a DCF through XDC) and back: python-canopen, the judge, reads the same
-entries as from the file in canonical form, but for objects `convert` names as not kept. The canonical form is
-the reference because the file as-is may spell keys python-canopen reads otherwise (`[DeviceCommissioning]`),
-which the canonical form and the round trip alike correct. An entry python-canopen reads more of after the round
+entries as from the file in canonical form, but for objects `convert` names as not kept (a signed value the EDS
+wrote as two's-complement hex comes back as the negative number). An entry python-canopen reads more of after the round
 trip than before (it cannot read a REAL ParameterValue written as a bit pattern), or reads without the quotes
 that delimit a string in lely's dialect, is no loss."""
 

@@ -1,0 +1,64 @@
+"""What "a file with errors is left as it is" means for `fmt` and `convert`, said alike by the code, `--help` and
+the README: an error of the reader's (a value or section it cannot read, which the canonical form could not carry)
+leaves the file as it is, exit 1, nothing written; an error of lint's rules (here EDS040: [DeviceInfo] says another
+product than 1018h) is lint's to report, and the file is formatted and converted, unchanged for peers."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from support import EXAMPLES, ROOT, cli_command
+
+DRIVE = (EXAMPLES / "cia402_drive.eds").read_bytes()
+# An UNSIGNED16 default no reader can read: the reader's error (EDS030).
+UNREADABLE = DRIVE.replace(b"DefaultValue=0x0000\n", b"DefaultValue=zero\n", 1)
+# [DeviceInfo] says another product than 1018h: an error of lint's rules (EDS040), none of the reader's.
+WRONG_PRODUCT = DRIVE.replace(b"ProductNumber=0x00000402", b"ProductNumber=0x1")
+PROMISE = "the reader reports an error in"
+
+
+def run(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([*cli_command(), *args], cwd=cwd, capture_output=True, text=True, timeout=120)
+
+
+COMMANDS = {
+    "fmt": (("fmt", "drive.eds"), "formatted"),
+    "fmt --check": (("fmt", "--check", "drive.eds"), "formatted"),
+    "convert": (("convert", "drive.eds", "-o", "out.xdd"), "converted"),
+}
+
+
+@pytest.mark.parametrize("command", list(COMMANDS))
+def test_a_file_the_reader_reports_an_error_in_is_left_as_it_is(tmp_path: Path, command: str) -> None:
+    assert UNREADABLE != DRIVE
+    (tmp_path / "drive.eds").write_bytes(UNREADABLE)
+    args, verb = COMMANDS[command]
+    ran = run(*args, cwd=tmp_path)
+    assert ran.returncode == 1 and "[EDS030]" in ran.stderr, ran.stderr
+    assert f"drive.eds: error: not {verb}: 1 error to fix first" in ran.stderr
+    assert (tmp_path / "drive.eds").read_bytes() == UNREADABLE
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["drive.eds"]
+
+
+def test_an_error_of_lint_rules_is_lints_to_report(tmp_path: Path) -> None:
+    (tmp_path / "drive.eds").write_bytes(WRONG_PRODUCT)
+    linted = run("lint", "drive.eds", cwd=tmp_path)
+    assert linted.returncode == 1 and "[EDS040]" in linted.stdout, linted.stdout
+    assert run("convert", "drive.eds", "-o", "out.xdd", cwd=tmp_path).returncode == 0
+    formatted = run("fmt", "drive.eds", cwd=tmp_path)
+    assert formatted.returncode == 0 and formatted.stderr == "reformatted drive.eds\n", formatted.stderr
+    assert b"ProductNumber=0x00000001" in (tmp_path / "drive.eds").read_bytes()
+
+
+def test_help_and_readme_say_the_same(tmp_path: Path) -> None:
+    readme = re.sub(r"\s+", " ", (ROOT / "README.md").read_text(encoding="utf-8"))
+    for command in ("fmt", "convert"):
+        said = re.sub(r"\s+", " ", run(command, "--help", cwd=tmp_path).stdout)
+        assert PROMISE in said and "the errors of lint's rules are lint's to report" in said, said
+        row = next(line for line in readme.split("| `cantools-od ")[1:] if line.startswith(command + " "))
+        assert PROMISE in row, row
+    assert "The errors of lint's rules" in readme and "with errors is left" not in readme

@@ -56,7 +56,7 @@ def _objects(ctx: Context) -> Iterator[Object]:
     if ctx.options.profile != PROFILE:
         return
     for _, obj in sorted(ctx.device.objects.items()):
-        if obj.kind in _SUPPORTED and not (obj.canopennode is not None and obj.canopennode.disabled):
+        if obj.kind in _SUPPORTED and not obj.left_out:
             yield obj
 
 

@@ -166,6 +166,12 @@ class Object(Variable):
     def has_subs(self) -> bool:
         return self.kind in (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
 
+    @property
+    def left_out(self) -> bool:
+        """The project keeps the object but the device does not have it: CANopenEditor's `CO_disabled`
+        (its EDS export and its OD.c leave such objects out)."""
+        return self.canopennode is not None and bool(self.canopennode.disabled)
+
     def entry(self, subindex: int) -> Variable | None:
         """The VAR itself for sub-index 0 of a VAR, else the sub-object."""
         if not self.has_subs:

@@ -369,9 +369,7 @@ def _bits(directions: str) -> str:
 def generated_objects(device: Device) -> list[Object]:
     """The objects that go into the OD: VAR, DOMAIN, ARRAY and RECORD objects not disabled."""
     return [  # by index, whatever the file's order: OD_find searches the list by bisection
-        obj
-        for _, obj in sorted(device.objects.items())
-        if obj.kind in _KINDS and not (obj.canopennode is not None and obj.canopennode.disabled)
+        obj for _, obj in sorted(device.objects.items()) if obj.kind in _KINDS and not obj.left_out
     ]
 
 

@@ -1,0 +1,73 @@
+"""What lint says of CANopenNode/CANopenEditor projects and commissioned DCFs is what the device does (issue #41).
+
+Each test reads a real project file of ../shared in place (or a copy in a scratch folder, edited as the test says)
+through the installed CLI, as a user meets it.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from support import SHARED, cli_command
+
+# EvgenyDD/sh_gateway's CANopenEditor project: 1020h-1026h are kept in the project with CO_disabled.
+GATEWAY = SHARED / "eds-history" / "EvgenyDD__sh_gateway__3" / "new.xdd"
+
+
+def _need(path: Path) -> Path:
+    if not path.is_file():
+        pytest.skip(f"{path} is absent")
+    return path
+
+
+def _lint(path: Path, *args: str) -> list[dict[str, object]]:
+    done = subprocess.run(
+        [*cli_command(), "lint", "-j1", "--format", "json", *args, str(path)], capture_output=True, text=True
+    )
+    assert done.returncode in (0, 1), done.stderr
+    found: list[dict[str, object]] = json.loads(done.stdout)
+    return found
+
+
+def _lines_of(text: str, unique_id: str) -> range:
+    """The lines (from 1) of the <parameter> whose uniqueID is `unique_id`."""
+    lines = text.splitlines()
+    start = next(n for n, line in enumerate(lines) if f'uniqueID="{unique_id}"' in line)
+    end = next(n for n in range(start, len(lines)) if "</q1:parameter>" in lines[n])
+    return range(start + 1, end + 2)
+
+
+def test_a_co_disabled_object_is_outside_the_device_for_every_rule() -> None:
+    text = _need(GATEWAY).read_text(encoding="utf-8")
+    found = _lint(GATEWAY)
+    disabled = [
+        line
+        for uid in ("UID_OBJ_1022", "UID_OBJ_1026", "UID_SUB_102602", "UID_SUB_102603")
+        for line in _lines_of(text, uid)
+    ]
+    assert [f for f in found if f["line"] in disabled or "1022" in str(f["message"])] == []
+    # the rules still judge the objects the device has (CiA 302-3 gives 1F51h sub-index 1 UNSIGNED8)
+    assert any(f["code"] == "STD003" and "[1F51sub1]" in str(f["message"]) for f in found)
+
+
+def _edit(text: str, unique_id: str, old: str, new: str) -> str:
+    """`text` with `old` replaced by `new` inside the <parameter> whose uniqueID is `unique_id`."""
+    where = _lines_of(text, unique_id)
+    lines = text.splitlines(keepends=True)
+    edited = [line.replace(old, new) for line in lines[where.start - 1 : where.stop]]
+    return "".join(lines[: where.start - 1] + edited + lines[where.stop :])
+
+
+def test_store_format_as_unsigned16_follows_the_peers_and_is_not_an_error(tmp_path: Path) -> None:
+    # 1022h enabled: CiA 301 says UNSIGNED8, CANopenEditor/objdictgen/kacanopen UNSIGNED16; the file follows them.
+    text = _edit(_need(GATEWAY).read_text(encoding="utf-8"), "UID_OBJ_1022", 'value="true"', 'value="false"')
+    copy = tmp_path / "profile.xdd"
+    copy.write_text(text, encoding="utf-8")
+    assert [f for f in _lint(copy) if "1022" in str(f["message"])] == []
+    # a type neither the standard nor a peer gives is still reported
+    copy.write_text(_edit(text, "UID_OBJ_1022", "<UINT />", "<UDINT />"), encoding="utf-8")
+    assert [f["code"] for f in _lint(copy) if "[1022]" in str(f["message"])] == ["STD003"]

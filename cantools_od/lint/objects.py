@@ -269,7 +269,8 @@ def _counts_entries(obj: Object, sub0: SubObject) -> bool:
     """
 Sub-index 0 of an ARRAY or RECORD holds the highest sub-index it implements; sub-indices need not
 be consecutive (1010h may have sub0 and sub4 only, sub0=4). A smaller value hides the upper
-sub-objects. Not checked: 1003h (sub0 counts the errors), PDO objects (see the PDO rules) and
+sub-objects. The value judged is the one the device holds: a DCF's ParameterValue, else the
+DefaultValue. Not checked: 1003h (sub0 counts the errors), PDO objects (see the PDO rules) and
 objects whose sub0 is writable, where sub0 counts the valid entries.""",
     (
         "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
@@ -292,12 +293,12 @@ def sub0_value(ctx: Context) -> Iterator[Finding]:
         sub0 = obj.subs.get(0)
         if not _has_subs(obj) or sub0 is None or _counts_entries(obj, sub0):
             continue
-        highest = _highest(obj)
-        if isinstance(sub0.default, int) and not isinstance(sub0.default, bool) and sub0.default < highest:
-            message = f"[{obj.index:04X}sub0]: DefaultValue={sub0.default} but sub-index {highest} exists"
+        highest, held, key = _highest(obj), sub0.held, sub0.held_key
+        if isinstance(held, int) and not isinstance(held, bool) and held < highest:
+            message = f"[{obj.index:04X}sub0]: {key}={held} but sub-index {highest} exists"
             # Unsafe: the value every reader reads changes, and a vendor's sub0 may count entries.
-            fix = Fix(f"set DefaultValue={highest}", False, _fix_sub0(obj.index))
-            yield ctx.report("EDS026", message, ctx.value_at(sub0, "DefaultValue"), fix)
+            fix = Fix(f"set {key}={highest}", False, _fix_sub0(obj.index))
+            yield ctx.report("EDS026", message, ctx.value_at(sub0, key), fix)
 
 
 def _highest(obj: Object) -> int:
@@ -308,8 +309,9 @@ def _fix_sub0(index: int) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
         obj = device.objects.get(index)
         sub0 = obj.subs.get(0) if obj is not None else None
-        if obj is not None and sub0 is not None and isinstance(sub0.default, int):
-            sub0.default = max(sub0.default, _highest(obj))
+        if obj is None or sub0 is None or not isinstance(sub0.held, int):
+            return
+        sub0.hold(max(sub0.held, _highest(obj)))
 
     return apply
 

@@ -367,7 +367,7 @@ def value_range(ctx: Context) -> Iterator[Finding]:
         for subindex, var, entry in _all_entries(obj, found):
             if entry.values is None or (isinstance(var, SubObject) and var.implicit):
                 continue
-            key = "ParameterValue" if var.parameter_value is not None else "DefaultValue"
+            key = var.held_key
             value = as_int(ctx.device.resolve(var.value()))
             if value is None or any(low <= value <= high for low, high in entry.values):
                 continue

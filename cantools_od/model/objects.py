@@ -123,9 +123,27 @@ class Variable(Section):
     def mappable(self) -> bool:
         return bool(self.pdo_mapping)
 
+    @property
+    def held(self) -> Value | None:
+        """The value the device holds, as written: a DCF's ParameterValue (what was configured into the device,
+        or uploaded from it), else the DefaultValue. Every check and view of values reads this one."""
+        return self.parameter_value if self.parameter_value is not None else self.default
+
+    @property
+    def held_key(self) -> str:
+        """The key that writes `held`: ParameterValue or DefaultValue."""
+        return "ParameterValue" if self.parameter_value is not None else "DefaultValue"
+
+    def hold(self, value: Value) -> None:
+        """Make `value` the one the device holds: written where `held` is (ParameterValue or DefaultValue)."""
+        if self.parameter_value is not None:
+            self.parameter_value = value
+        else:
+            self.default = value
+
     def value(self, node_id: int | None = None) -> Value | None:
-        """The configured value (ParameterValue, else DefaultValue), resolved for a node-ID."""
-        value = self.parameter_value if self.parameter_value is not None else self.default
+        """The value the device holds (`held`), resolved for a node-ID."""
+        value = self.held
         if isinstance(value, NodeIdExpr) and node_id is not None:
             return value.resolve(node_id)
         return value

@@ -241,7 +241,7 @@ def _pdo_cell(entry: EntryView, mapped: dict[tuple[int, int], list[str]]) -> str
 
 def _value(view: DeviceView, entry: EntryView) -> str:
     _, var = _variable(view.device, entry)
-    value = var.parameter_value if var.parameter_value is not None else var.default
+    value = var.held
     if value is None:
         return NONE
     if isinstance(value, RawValue):

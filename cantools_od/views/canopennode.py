@@ -276,7 +276,7 @@ class _Builder:
         dtype = editor_entry_type(self.device, var, obj)
         assert dtype is not None, "the canopennode profile refuses entries without a type"
         info = var.canopennode
-        value = var.parameter_value if var.parameter_value is not None else var.default
+        value = var.held
         where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
         if isinstance(value, NodeIdExpr):
             self.note(where, f"default {value.canonical()} stored as 0x{value.offset:X}: the stack adds the node-ID")

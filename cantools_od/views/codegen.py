@@ -194,7 +194,7 @@ def _number(value: Value | None) -> int | float | None:
 
 
 def _entry(device: Device, ids: Identifiers, obj: Object, subindex: int, var: Variable) -> EntryView:
-    value = var.parameter_value if var.parameter_value is not None else var.default
+    value = var.held
     return EntryView(
         index=obj.index,
         subindex=subindex,

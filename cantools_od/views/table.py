@@ -31,7 +31,7 @@ def _row(device: Device, index: str, sub: str, var: Variable, owner: Object, kin
     dtype = device.entry_type(var, owner)
     type_name = kind or (dtype.name if dtype else (f"0x{var.data_type:04X}" if var.data_type is not None else ""))
     access = var.access.value if var.access else ""
-    value = display(var.parameter_value if var.parameter_value is not None else var.default)
+    value = display(var.held)
     limits = ""
     if var.low_limit is not None or var.high_limit is not None:
         limits = f"{display(var.low_limit)}..{display(var.high_limit)}"

@@ -71,3 +71,45 @@ def test_store_format_as_unsigned16_follows_the_peers_and_is_not_an_error(tmp_pa
     # a type neither the standard nor a peer gives is still reported
     copy.write_text(_edit(text, "UID_OBJ_1022", "<UINT />", "<UDINT />"), encoding="utf-8")
     assert [f["code"] for f in _lint(copy) if "[1022]" in str(f["message"])] == ["STD003"]
+
+
+# Commissioned DCFs of ../shared: maxon's EPOS4 node 1 (30AEh: 64 sub-indices, sub0 ParameterValue=64) and Sevcon's
+# template, uploaded from a device (1001h Error register, ro, ParameterValue=0x91).
+EPOS4 = SHARED / "eds-corpus" / "eds" / "maxon__epos4_50_15_can_ec90flat_gp52c_mile800_node1_demo.dcf"
+SEVCON = SHARED / "eds-corpus" / "eds" / "sevcon__template.dcf"
+
+
+def _edit_section(path: Path, section: str, old: str, new: str, into: Path) -> Path:
+    """A copy of `path` in `into` with `old` replaced by `new` in [section] only (line ends kept)."""
+    text = _need(path).read_bytes().decode("latin-1")
+    start = text.index(f"[{section}]")
+    end = text.find("\n[", start)
+    end = len(text) if end < 0 else end
+    assert old in text[start:end]
+    copy = into / path.name
+    copy.write_bytes((text[:start] + text[start:end].replace(old, new, 1) + text[end:]).encode("latin-1"))
+    return copy
+
+
+def _at(found: list[dict[str, object]], code: str) -> list[str]:
+    return [str(f["message"]) for f in found if f["code"] == code]
+
+
+def test_sub_index_0_is_judged_by_the_value_the_dcf_configures(tmp_path: Path) -> None:
+    # The device holds ParameterValue=64 for its 64 entries; the template's DefaultValue=44 is not what it has.
+    copy = _edit_section(EPOS4, "30AEsub0", "DefaultValue=64", "DefaultValue=44", tmp_path)
+    assert [m for m in _at(_lint(copy), "EDS026") if "30AE" in m] == []
+    # configured too low, it hides entries: said of the ParameterValue
+    copy = _edit_section(EPOS4, "30AEsub0", "ParameterValue=64", "ParameterValue=0x36", tmp_path)
+    assert [m for m in _at(_lint(copy), "EDS026") if "30AE" in m] == [
+        "[30AEsub0]: ParameterValue=54 but sub-index 64 exists"
+    ]
+
+
+def test_the_uploaded_parameter_value_of_a_read_only_entry_is_not_a_configuration(tmp_path: Path) -> None:
+    copy = _edit_section(SEVCON, "1001", "HighLimit=0xFF", "HighLimit=0x7F", tmp_path)
+    assert [m for m in _at(_lint(copy), "EDS061") if "1001" in m] == []
+    # a writable entry's ParameterValue is downloaded at boot-up: outside its limits, the configuration fails
+    (tmp_path / "rw").mkdir()
+    writable = _edit_section(copy, "1001", "AccessType=ro", "AccessType=rw", tmp_path / "rw")
+    assert len([m for m in _at(_lint(writable), "EDS061") if "1001" in m]) == 1

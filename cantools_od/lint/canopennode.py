@@ -33,10 +33,10 @@ from ..model.canopennode import (
 )
 from ..model.datatypes import DOMAIN, INDEX_BY_NAME, REAL32, UNSIGNED8
 from . import examples as ex
-from .rules import Context, Finding, rule
+from .rules import CANOPENNODE, Context, Finding, rule
 
 E, W = Severity.ERROR, Severity.WARNING
-PROFILE = "canopennode"
+PROFILE = CANOPENNODE
 # Rule examples: an ARRAY of two INTEGER16 gains, its sub-index 0 and one gain.
 _COUNT = ("Highest sub-index supported", UNSIGNED8.index, "ro", 2)
 _GAIN = ("Gain", INDEX_BY_NAME["INTEGER16"], "rw", 0)

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
-from ..model import NodeIdExpr, Severity, standard_type
+from ..model import Device, NodeIdExpr, Severity, standard_type
 from ..model.assemble import construct
 from ..model.cia301.cobid import (
+    BASE_11BIT,
     BASE_29BIT,
     EXTENDED,
     HIGH_BITS,
@@ -16,15 +17,16 @@ from ..model.cia301.cobid import (
     Cob,
     collisions,
     default_cob,
+    predefined_pdo,
     restricted,
 )
-from ..model.cia301.connections import cob_entries, predefined_cob_base, producers
+from ..model.cia301.connections import canopennode_adds_node_id, cob_entries, predefined_cob_base, producers
 from ..model.cia301.objects import COB_ID_EMCY, FIRST_SDO_SERVER
 from ..model.cia301.pdo import COMM_SUBS, PREDEFINED, RX, TX, Pdo
 from ..model.cia301.slots import Slot, slot
 from . import examples as ex
 from .pdoread import device_pdos, first, int_value, node_ids
-from .rules import Context, Finding, rule
+from .rules import Context, Finding, Fix, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
@@ -95,7 +97,12 @@ def _service_id(cob: Cob, node_id: int) -> bool:
 CiA 301 reserves CAN-IDs for NMT (000h), SYNC/EMCY area below 080h, the SDO (581h-5FFh,
 601h-67Fh), NMT error control (701h-77Fh) and other services (101h-180h, 6E0h-6FFh, 780h-7FFh);
 a PDO must not use them. With `$NODEID` the COB-ID is checked for every node-ID the device may
-have, and the first one that fails is named.""",
+have, and the first one that fails is named.
+
+A CANopenNode project (written by CANopenEditor, or checked with `--profile canopennode`) may store
+a PDO's pre-defined base (0x180): the stack sends on it + node-ID (CO_PDO.c), every other tool on
+the restricted 180h. The finding then says so and offers `$NODEID+0x180` (unsafe: what peers read
+changes).""",
     lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x585") + ex.STATUSWORD,
     fixed=lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
 )
@@ -103,12 +110,30 @@ def check_restricted(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
     for pdo, cob in _pdo_cobs(ctx):
         node_id = first(cob, ids, _restricted)
-        if node_id is not None:
-            yield ctx.report(
-                "COB004",
-                f"{pdo.name}: COB-ID {cob.shown(node_id)} is a restricted CAN-ID",
-                cob.location(ctx),
+        if node_id is None:
+            continue
+        message = f"{pdo.name}: COB-ID {cob.shown(node_id)} is a restricted CAN-ID"
+        fix = None
+        if _stack_rebased(ctx, cob):
+            base = construct(NodeIdExpr, {"offset": cob.at(0)})
+            message = (
+                f"{pdo.name}: COB-ID {cob.written} is the pre-defined base: CANopenNode sends on it + node-ID, "
+                f"but every other tool reads the restricted CAN-ID {cob.describe(0)}; write {base.canonical()}"
             )
+            fix = Fix(f"write {base.canonical()}", False, _hold(cob, base))
+        yield ctx.report("COB004", message, cob.location(ctx), fix)
+
+
+def _hold(cob: Cob, value: NodeIdExpr) -> Callable[[Device], None]:
+    assert cob.slot is not None
+    index, subindex = cob.slot.owner.index, cob.slot.subindex
+
+    def apply(device: Device) -> None:
+        found = slot(device, index, subindex)
+        if found is not None:
+            found.var.hold(value)
+
+    return apply
 
 
 @rule(
@@ -159,7 +184,13 @@ CiA 301's pre-defined connection set gives EMCY (80h), the default SDO server (6
 PDOs 1-4 (RPDO 200h/300h/400h/500h, TPDO 180h/280h/380h/480h) COB-IDs of base + node-ID. An EDS
 describes every node of its kind, so it writes them as `$NODEID+0x180`: a literal such as
 `0x181` fits one node-ID only, and another base breaks the convention masters rely on.
-A disabled PDO without CAN-ID (0x80000000) is accepted. Not checked in DCFs.""",
+A disabled PDO without CAN-ID (0x80000000) is accepted. Not checked in DCFs.
+
+A fixed COB-ID is advised `$NODEID+base` only where it is base + a node-ID the device may have. An
+RPDO on another pre-defined PDO's CAN-ID (190h: TPDO1 of node 16), or a TPDO on one (210h: RPDO1 of
+node 16), usually consumes or feeds another node's PDO: `$NODEID` would break that link, so the
+finding says what it links to and advises nothing. In a CANopenNode project a COB-ID that stores the
+base itself (0x180) is what the stack adds the node-ID to (CO_PDO.c); other tools read it as is.""",
     lambda: ex.pdo("tx", "0x60410010", cob="0x181") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
@@ -174,10 +205,41 @@ def check_predefined(ctx: Context) -> Iterator[Finding]:
             problem = f"{value.canonical()} is not the pre-defined $NODEID+0x{base:X}"
         elif value & VALID and not value & BASE_29BIT:
             continue
+        elif _stack_rebased(ctx, cob) and _restricted(cob, 0):
+            continue  # COB004 says it: valid on the base, a restricted CAN-ID to every other reader
         else:
-            wanted = construct(NodeIdExpr, {"offset": (value & (VALID | RTR)) | base}).canonical()
-            problem = f"0x{value:X} fits one node-ID only; write {wanted}"
+            problem = _fixed_id(ctx, cob, value, base)
         yield ctx.report("COB006", f"{cob.role}: default COB-ID {problem}", cob.location(ctx))
+
+
+def _fixed_id(ctx: Context, cob: Cob, value: int, base: int) -> str:
+    """What a literal default COB-ID means: this node's own pre-defined CAN-ID for one node-ID (advise $NODEID),
+    the base CANopenNode adds the node-ID to, or another node's PDO it links to (no advice: $NODEID breaks it)."""
+    wanted = construct(NodeIdExpr, {"offset": (value & (VALID | RTR)) | base}).canonical()
+    can_id = value & (BASE_29BIT if value & EXTENDED else BASE_11BIT)
+    if can_id == base:
+        if _stack_rebased(ctx, cob):
+            return f"0x{value:X} is the base CANopenNode adds the node-ID to; other tools read it as is: write {wanted}"
+        return f"0x{value:X} is the base without a node-ID; write {wanted}"
+    if can_id - base in node_ids(ctx) and not value & EXTENDED:
+        return f"0x{value:X} fits one node-ID only; write {wanted}"
+    linked = predefined_pdo(can_id) if cob.role[1:4] == "PDO" and not value & EXTENDED else None
+    if linked is not None:
+        direction, number, node = linked
+        kind = "TPDO" if direction == TX else "RPDO"
+        return (
+            f"0x{value:X} is the pre-defined CAN-ID of {kind}{number} of node-ID {node}: likely a link to "
+            f"another node's PDO, which $NODEID+0x{base:X} would break; keep it if so"
+        )
+    return f"0x{value:X} is not this node's pre-defined CAN-ID: a fixed CAN-ID fits one network only"
+
+
+def _stack_rebased(ctx: Context, cob: Cob) -> bool:
+    """A CANopenNode device stores the pre-defined base and sends on base + node-ID (literal COB-IDs only)."""
+    slot_ = cob.slot
+    if not ctx.for_canopennode or slot_ is None or isinstance(cob.value, NodeIdExpr):
+        return False
+    return canopennode_adds_node_id(slot_.owner.index, slot_.subindex, cob.value)
 
 
 @rule(

@@ -113,3 +113,62 @@ def test_the_uploaded_parameter_value_of_a_read_only_entry_is_not_a_configuratio
     (tmp_path / "rw").mkdir()
     writable = _edit_section(copy, "1001", "AccessType=ro", "AccessType=rw", tmp_path / "rw")
     assert len([m for m in _at(_lint(writable), "EDS061") if "1001" in m]) == 1
+
+
+HISTORY = SHARED / "eds-history"
+
+
+def test_a_fixed_pdo_cob_id_of_another_nodes_pdo_is_a_link_not_advised_nodeid() -> None:
+    # zylos146/CANFuck: RPDO1 on 1BFh consumes TPDO1 of node 63, TPDO1 on 23Fh feeds its RPDO1.
+    found = _at(_lint(_need(HISTORY / "zylos146__CANFuck__1" / "new.xdd")), "COB006")
+    links = [m for m in found if m.startswith(("RPDO1:", "TPDO1:"))]
+    assert links == [
+        "RPDO1: default COB-ID 0x1BF is the pre-defined CAN-ID of TPDO1 of node-ID 63: likely a link to another "
+        "node's PDO, which $NODEID+0x200 would break; keep it if so",
+        "TPDO1: default COB-ID 0x23F is the pre-defined CAN-ID of RPDO1 of node-ID 63: likely a link to another "
+        "node's PDO, which $NODEID+0x180 would break; keep it if so",
+    ]
+    # sudriabotik/carte_lidar_stm32: RPDO1 on 281h (TPDO2 of node 1) is a link; TPDO1 on 183h is this node's own
+    found = _at(_lint(_need(HISTORY / "sudriabotik__carte_lidar_stm32__1" / "new.xdd")), "COB006")
+    assert [m for m in found if m.startswith("RPDO1:")] == [
+        "RPDO1: default COB-ID 0x281 is the pre-defined CAN-ID of TPDO2 of node-ID 1: likely a link to another "
+        "node's PDO, which $NODEID+0x200 would break; keep it if so"
+    ]
+    assert [m for m in found if m.startswith("TPDO1:")] == [
+        "TPDO1: default COB-ID 0x183 fits one node-ID only; write $NODEID+0x180"
+    ]
+
+
+# node-canopen's test EDS, written for CANopenNode (its ;StorageLocation= lines): TPDO1 stores the base 0x180.
+NODE_CANOPEN = SHARED / "eds-corpus" / "eds" / "node-canopen__test.eds"
+
+
+def test_a_canopennode_base_cob_id_is_what_other_tools_read_literally(tmp_path: Path) -> None:
+    found = [f for f in _lint(_need(NODE_CANOPEN)) if f["code"] == "COB004" and "TPDO1" in str(f["message"])]
+    assert [(f["message"], f["fix"]) for f in found] == [
+        (
+            "TPDO1: COB-ID 0x180 is the pre-defined base: CANopenNode sends on it + node-ID, but every other tool "
+            "reads the restricted CAN-ID 180h; write $NODEID+0x180",
+            {"message": "write $NODEID+0x180", "safe": False},
+        )
+    ]
+    assert [m for m in _at(_lint(NODE_CANOPEN), "COB006") if m.startswith("TPDO1:")] == []  # one cause, one finding
+    # the same file without CANopenNode's marks is read literally by everyone: a restricted CAN-ID
+    plain = tmp_path / NODE_CANOPEN.name
+    lines = NODE_CANOPEN.read_bytes().split(b"\n")
+    plain.write_bytes(b"\n".join(line for line in lines if not line.startswith(b";StorageLocation=")))
+    assert [m for m in _at(_lint(plain), "COB004") if m.startswith("TPDO1:")] == [
+        "TPDO1: COB-ID 0x180 is a restricted CAN-ID"
+    ]
+
+
+def test_the_base_cob_id_fix_writes_what_the_stack_sends_and_nothing_else(tmp_path: Path) -> None:
+    copy = tmp_path / NODE_CANOPEN.name
+    before = _need(NODE_CANOPEN).read_bytes()
+    copy.write_bytes(before)
+    done = subprocess.run(
+        [*cli_command(), "lint", "-j1", "--select", "COB004", "--fix", "--unsafe-fixes", str(copy)], capture_output=True
+    )
+    assert done.returncode == 0, done.stderr
+    changed = [(a, b) for a, b in zip(before.split(b"\n"), copy.read_bytes().split(b"\n"), strict=True) if a != b]
+    assert changed == [(b"DefaultValue=0x00000180\r", b"DefaultValue=$NODEID+0x180\r")]

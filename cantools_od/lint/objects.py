@@ -61,7 +61,11 @@ _PAIR_SUBS = (
 The obligation matrix of CiA 306 (object descriptions, §4.6.3) makes ParameterName mandatory everywhere;
 DataType and AccessType for VAR, DEFTYPE, sub-objects and CompactSubObj objects; SubNumber for
 ARRAY, RECORD and DEFSTRUCT without CompactSubObj. A missing key equals an empty one. Tools
-crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
+crash on these (lely: `KeyError: 'DataType'`) or drop the object.
+
+An XDD's `access="noAccess"` (CiA 311: the entry exists, no SDO reaches it) is a warning: an EDS
+has no AccessType that says it (`convert` writes `ro`), and CANopenEditor writes it for entries
+whose access type it lost, which a master then cannot configure.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     per_object=True,
@@ -74,11 +78,22 @@ def missing_keys(ctx: Context) -> Iterator[Finding]:
         for key in _mandatory(obj, subindex is not None):
             if xml and key == "ParameterName":
                 continue  # an XDD's missing name attribute is XDD006
-            if not given(var, key):
+            if key == "AccessType" and var.no_access:
+                yield _no_access(ctx, var, where(obj, subindex))
+            elif not given(var, key):
                 kind = "a sub-object" if subindex is not None else f"{obj.kind.name}"
                 empty = var.origin is not None and var.origin.where(key) is not None
                 message = f"{where(obj, subindex)}: {key} is empty" if empty else f"{where(obj, subindex)}: no {key}"
                 yield ctx.report("EDS020", f"{message}; {kind} needs it", ctx.at(var, key))
+
+
+def _no_access(ctx: Context, var: Variable, label: str) -> Finding:
+    """An XDD's access="noAccess" is CiA 311: the device has the entry but no SDO reaches it."""
+    message = (
+        f'{label}: access="noAccess": no SDO reads or writes it, and an EDS has no AccessType for it '
+        "(CANopenEditor writes noAccess where it does not know the access type)"
+    )
+    return ctx.report("EDS020", message, ctx.at(var, "AccessType"))._replace(severity=W)
 
 
 @rule(

@@ -41,6 +41,10 @@ class AccessType(StrEnum):
         return self in (AccessType.WO, AccessType.RW, AccessType.RWR, AccessType.RWW)
 
 
+NO_ACCESS = "noAccess"
+"""CiA 311's access of an entry no SDO reaches; an EDS has no AccessType for it. Kept as the XDD's `access`."""
+
+
 class Section(BaseModel):
     """What every section-backed part of the model keeps beside its data.
 
@@ -114,6 +118,12 @@ class Variable(Section):
         if stated is None or self.pdo_mapping is None or (stated != "no") != self.pdo_mapping:
             return None  # not stated, or `pdo_mapping` was changed since: the word no longer holds
         return str(stated)
+
+    @property
+    def no_access(self) -> bool:
+        """The file (an XDD) says access="noAccess": the entry is in the device but no SDO reads or writes it.
+        CANopenEditor writes it for an entry whose access type it does not know."""
+        return self.access is None and self.extra.get("access") == NO_ACCESS
 
     @property
     def dtype(self) -> DataType | None:

@@ -172,3 +172,31 @@ def test_the_base_cob_id_fix_writes_what_the_stack_sends_and_nothing_else(tmp_pa
     assert done.returncode == 0, done.stderr
     changed = [(a, b) for a, b in zip(before.split(b"\n"), copy.read_bytes().split(b"\n"), strict=True) if a != b]
     assert changed == [(b"DefaultValue=0x00000180\r", b"DefaultValue=$NODEID+0x180\r")]
+
+
+# zylos146/CANFuck's CANopenEditor project: 51 entries (the PDO communication records among them) with
+# access="noAccess", as CANopenEditor writes an entry whose access type it does not know.
+CANFUCK = HISTORY / "zylos146__CANFuck__1" / "new.xdd"
+
+
+def test_an_xdd_no_access_entry_is_said_as_such_not_an_empty_access_type() -> None:
+    found = [f for f in _lint(_need(CANFUCK)) if f["code"] == "EDS020"]
+    assert len(found) == 51
+    assert {f["severity"] for f in found} == {"warning"}
+    assert found[0]["message"] == (
+        '[1400sub0]: access="noAccess": no SDO reads or writes it, and an EDS has no AccessType for it '
+        "(CANopenEditor writes noAccess where it does not know the access type)"
+    )
+
+
+def test_convert_writes_no_empty_access_type_and_says_what_it_cannot_keep(tmp_path: Path) -> None:
+    out = tmp_path / "canfuck.eds"
+    done = subprocess.run(
+        [*cli_command(), "convert", str(_need(CANFUCK)), "-o", str(out)], capture_output=True, text=True
+    )
+    assert done.returncode == 0, done.stderr
+    assert 'access="noAccess" of 1400sub0, 1400sub1, 1400sub2, 1401sub0, 1401sub1 ... is not kept in EDS' in done.stderr
+    text = out.read_text(encoding="utf-8")
+    assert "AccessType=\n" not in text
+    assert text.split("[1400sub1]\n", 1)[1].split("\n\n", 1)[0].count("AccessType=ro") == 1
+    assert _at(_lint(out), "EDS020") == []  # our own lint accepts what convert wrote

@@ -141,13 +141,16 @@ def dcf_node_id(ctx: Context) -> Iterator[Finding]:
     E,
     "NodeID outside 1..127",
     """
-CANopen node-IDs are 1..127. lely also writes 255 for "not configured" (EDS063).""",
+CANopen node-IDs are 1..127. lely also writes 255 for "not configured", and CANopenEditor a
+`<deviceCommissioning nodeID="0">` in a device description (.xdd): both are EDS063.""",
     "[DeviceComissioning]\nNodeID=128",
     fixed="[DeviceComissioning]\nNodeID=127",
 )
 def node_id_range(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning
     node_id = section.node_id if section is not None else None
+    if _placeholder(ctx):
+        return  # EDS063
     if section is not None and node_id is not None and not 1 <= node_id <= 127 and node_id != 255:
         yield ctx.report("EDS062", f"NodeID={node_id} is not a node-ID (1..127)", ctx.value_at(section, "NodeID"))
 
@@ -155,10 +158,11 @@ def node_id_range(ctx: Context) -> Iterator[Finding]:
 @rule(
     "EDS063",
     INFO,
-    "NodeID 255: node-ID not configured",
+    "Node-ID not configured (NodeID 255, an XDD's nodeID 0)",
     """
-lely writes `NodeID=255` (0xFF) for a node whose node-ID is assigned later (LSS). `$NODEID`
-values stay unresolved.""",
+lely writes `NodeID=255` (0xFF) for a node whose node-ID is assigned later (LSS), and
+CANopenEditor `<deviceCommissioning nodeID="0">` into every XDD device description it saves.
+`$NODEID` values stay unresolved.""",
     "[DeviceComissioning]\nNodeID=0xFF",
     fixed="[DeviceComissioning]\nNodeID=5",
 )
@@ -166,6 +170,17 @@ def node_id_unset(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning
     if section is not None and section.node_id == 255:
         yield ctx.report("EDS063", "NodeID=255: node-ID not configured", ctx.value_at(section, "NodeID"))
+    elif section is not None and _placeholder(ctx):
+        message = 'nodeID="0" in a device description: a placeholder (CANopenEditor writes it), node-ID not configured'
+        yield ctx.report("EDS063", message, ctx.value_at(section, "NodeID"))
+
+
+def _placeholder(ctx: Context) -> bool:
+    """An XDD device description (not an .xdc) whose deviceCommissioning says nodeID="0": CANopenEditor writes
+    one into every project file it saves; no node is configured by it."""
+    section, device = ctx.device.commissioning, ctx.device
+    description = device.file_format == "xdd" and not device.source.lower().endswith(".xdc")
+    return description and section is not None and section.node_id == 0
 
 
 # ---- module concept --------------------------------------------------------------------------------------------

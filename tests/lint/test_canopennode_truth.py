@@ -200,3 +200,31 @@ def test_convert_writes_no_empty_access_type_and_says_what_it_cannot_keep(tmp_pa
     assert "AccessType=\n" not in text
     assert text.split("[1400sub1]\n", 1)[1].split("\n\n", 1)[0].count("AccessType=ro") == 1
     assert _at(_lint(out), "EDS020") == []  # our own lint accepts what convert wrote
+
+
+# sudriabotik/carte_lidar_stm32 (CANopenEditor v4.0): 2000h is access="readWriteInput" beside PDOmapping="RPDO";
+# the project's OD.c gives it ODA_RPDO (the stack follows PDOmapping).
+SUDRIABOTIK = HISTORY / "sudriabotik__carte_lidar_stm32__1" / "new.xdd"
+
+
+def test_an_inverted_canopeneditor_access_says_which_word_the_stack_follows(tmp_path: Path) -> None:
+    copy = tmp_path / "DS301_profile.xdd"
+    text = _need(SUDRIABOTIK).read_text(encoding="utf-8")
+    copy.write_text(_edit(text, "UID_SUB_160001", "0x22000010", "0x20000010"), encoding="utf-8")  # RPDO1 maps 2000h
+    found = [f for f in _lint(copy) if f["code"] == "PDO044" and "2000sub0" in str(f["message"])]
+    assert [(f["severity"], f["message"]) for f in found] == [
+        (
+            "warning",
+            "RPDO1 writes 2000sub0 (ACTION_ID), whose access is rwr beside PDOmapping=RPDO: CANopenNode follows "
+            "PDOmapping (CANopenEditor v4.0 wrote the access inverted; its OD.c maps the entry into RPDOs), tools "
+            "that read the access do not",
+        )
+    ]
+
+
+def test_an_xdd_device_descriptions_node_id_0_is_a_placeholder_not_an_error() -> None:
+    # oresat-firmware's CANopenEditor project: <deviceCommissioning nodeID="0" .../> in a .xdd
+    found = [
+        f for f in _lint(_need(HISTORY / "oresat__oresat-firmware__6" / "new.xdd")) if f["code"] in ("EDS062", "EDS063")
+    ]
+    assert [(f["code"], f["severity"]) for f in found] == [("EDS063", "info")]

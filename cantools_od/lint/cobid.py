@@ -12,11 +12,15 @@ from ..model.cia301.cobid import (
     EXTENDED,
     HIGH_BITS,
     RTR,
+    SDO_RX_BASE,
+    SDO_TX_BASE,
     SERVICE_IDS,
     VALID,
     Cob,
+    cob_of,
     collisions,
     default_cob,
+    known_node_id,
     predefined_pdo,
     restricted,
 )
@@ -25,7 +29,7 @@ from ..model.cia301.objects import COB_ID_EMCY, FIRST_SDO_SERVER
 from ..model.cia301.pdo import COMM_SUBS, PREDEFINED, RX, TX, Pdo
 from ..model.cia301.slots import Slot, slot
 from . import examples as ex
-from .pdoread import device_pdos, first, int_value, node_ids
+from .pdoread import device_pdos, first, int_value, node_ids, with_severity
 from .rules import Context, Finding, Fix, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
@@ -243,6 +247,40 @@ def _stack_rebased(ctx: Context, cob: Cob) -> bool:
 
 
 @rule(
+    "COB012",
+    W,
+    "Default SDO server COB-ID changed or disabled",
+    """
+CiA 301 fixes the default SDO server (1200h): its COB-IDs are 600h + node-ID (client to server)
+and 580h + node-ID (server to client), read-only. Masters reach every node there without reading
+the file, and CANopenNode writes these values into 1200h at start-up whatever the file stores. A
+file that disables them (bit 31) or moves them tells a tool that trusts it that the device has no
+SDO server, or another one. A disabled one is reported here; a moved one in an EDS by COB006, in a
+DCF here (against the commissioned node-ID).""",
+    lambda: ex.sdo_server(rx="0x80000000", tx="0x80000000"),
+    fixed=lambda: ex.sdo_server(),
+)
+def check_default_sdo_server(ctx: Context) -> Iterator[Finding]:
+    node_id = known_node_id(ctx.device, ctx.options.node_id)
+    for subindex, base in ((1, SDO_RX_BASE), (2, SDO_TX_BASE)):
+        role = f"SDO server {FIRST_SDO_SERVER:04X}h sub{subindex}"
+        cob = cob_of(slot(ctx.device, FIRST_SDO_SERVER, subindex), role)
+        problem = _sdo_server_problem(cob, base, node_id if ctx.device.is_dcf else None) if cob else None
+        if cob is not None and problem:
+            message = f"{role}: {problem}; CiA 301 fixes the default SDO server at 0x{base:X} + node-ID"
+            yield ctx.report("COB012", message, cob.location(ctx))
+
+
+def _sdo_server_problem(cob: Cob, base: int, commissioned: int | None) -> str:
+    """Disabled anywhere; moved in a DCF, against its node-ID (in an EDS COB006 says a moved one)."""
+    if cob.at(1) & VALID:
+        return f"{cob.written} disables it"
+    if commissioned is not None and cob.at(commissioned) != base + commissioned:
+        return f"{cob.written} is not 0x{base + commissioned:X} for node-ID {commissioned}"
+    return ""
+
+
+@rule(
     "COB007",
     W,
     "PDO 5 or higher valid by default",
@@ -347,11 +385,13 @@ def _comm_subs(ctx: Context) -> Iterator[tuple[Pdo, Slot]]:
 @rule(
     "PDO010",
     E,
-    "Communication record sub0 below its highest sub-index",
+    "Communication record sub0 does not match its sub-indices",
     """
 Sub0 of a PDO communication record holds the highest sub-index the record supports (2..6).
 Sub-objects above it do not exist for an SDO client, so an inhibit time or event timer
-described there is never used.""",
+described there is never used. Above the highest sub-index described, it names entries a master
+then reads and cannot (SDO abort). An RPDO's record ends at sub5 (CiA 301 §7.5.2.35), though RPDO
+and TPDO records share one table: an RPDO that describes a sub6 and counts it is a warning.""",
     lambda: (
         ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}).replace(
             "DefaultValue=5\n", "DefaultValue=2\n", 1
@@ -367,12 +407,21 @@ def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
         if pdo.comm is None or count_slot is None or highest is None:
             continue
         above = [s for s in pdo.comm.subs if s > highest]
+        where = f"{pdo.name}: {pdo.comm.index:04X}sub0 is {highest}"
         if above:
-            yield ctx.report(
-                "PDO010",
-                f"{pdo.name}: {pdo.comm.index:04X}sub0 is {highest}, but sub{max(above)} is described",
-                count_slot.location(ctx),
+            yield ctx.report("PDO010", f"{where}, but sub{max(above)} is described", count_slot.location(ctx))
+        elif highest > max(pdo.comm.subs):
+            message = f"{where}, but only sub0-sub{max(pdo.comm.subs)} are described: reading sub{highest} fails"
+            yield ctx.report("PDO010", message, count_slot.location(ctx))
+        elif pdo.direction == RX and highest > _RPDO_LAST_SUB:
+            message = (
+                f"{where}, but an RPDO's sub-indices end at {_RPDO_LAST_SUB} (sub6, SYNC start value, is a TPDO's)"
             )
+            yield with_severity(ctx.report("PDO010", message, count_slot.location(ctx)), W)
+
+
+_RPDO_LAST_SUB = 5
+"""CiA 301 §7.5.2.35: an RPDO communication record has sub-indices 1-5; sub6 (SYNC start value) is a TPDO's."""
 
 
 @rule(

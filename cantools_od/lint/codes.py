@@ -185,6 +185,7 @@ NAMES: dict[str, dict[str, str]] = {
         "COB007": "pdo-5-plus-valid-by-default",
         "COB009": "producers-share-can-id",
         "COB010": "rpdos-share-can-id",
+        "COB012": "default-sdo-server-cob-id-changed",
         "PDO010": "comm-sub0-below-highest",
         "PDO011": "rpdo-inhibit-or-sync-start",
         "PDO012": "comm-sub-object-type",

@@ -228,3 +228,31 @@ def test_an_xdd_device_descriptions_node_id_0_is_a_placeholder_not_an_error() ->
         f for f in _lint(_need(HISTORY / "oresat__oresat-firmware__6" / "new.xdd")) if f["code"] in ("EDS062", "EDS063")
     ]
     assert [(f["code"], f["severity"]) for f in found] == [("EDS063", "info")]
+
+
+def test_a_pdo_communication_sub0_above_the_subs_described_is_reported() -> None:
+    # zylos146/CANFuck: 1400h and 1401h count 6 sub-indices and describe sub0-sub2 (an RPDO's end at sub5)
+    found = [m for m in _at(_lint(_need(CANFUCK)), "PDO010")]
+    assert found == [
+        "RPDO1: 1400sub0 is 6, but only sub0-sub2 are described: reading sub6 fails",
+        "RPDO2: 1401sub0 is 6, but only sub0-sub2 are described: reading sub6 fails",
+    ]
+
+
+def test_a_disabled_default_sdo_server_is_reported() -> None:
+    # oresat-firmware's EDS: 1200h sub1/sub2 = 0x80000000; CiA 301 fixes them (CANopenNode rewrites them at start-up)
+    found = _at(_lint(_need(HISTORY / "oresat__oresat-firmware__13" / "old.eds")), "COB012")
+    assert found == [
+        "SDO server 1200h sub1: 0x80000000 disables it; CiA 301 fixes the default SDO server at 0x600 + node-ID",
+        "SDO server 1200h sub2: 0x80000000 disables it; CiA 301 fixes the default SDO server at 0x580 + node-ID",
+    ]
+
+
+def test_a_moved_default_sdo_server_in_a_dcf_is_reported(tmp_path: Path) -> None:
+    # maxon's EPOS4 DCF (NodeID=1): 1200h sub1 ParameterValue=0x00000601, as CiA 301 fixes it
+    assert _at(_lint(_need(EPOS4)), "COB012") == []
+    copy = _edit_section(EPOS4, "1200sub1", "ParameterValue=0x00000601", "ParameterValue=0x00000611", tmp_path)
+    assert _at(_lint(copy), "COB012") == [
+        "SDO server 1200h sub1: 0x611 is not 0x601 for node-ID 1; CiA 301 fixes the default SDO server at 0x600 "
+        "+ node-ID"
+    ]

@@ -109,7 +109,9 @@ and sub-objects have no SubNumber. Tools disagree about what such keys mean.
 Error, as a rule: a tool may take the key at its word (sub-objects on a VAR, a mappable DOMAIN).
 Warning where the value says what the object type already says: `SubNumber=0` on a VAR or a
 sub-object, `PDOMapping=0` on a DOMAIN (CANopenNode's editors write both); every tool reads them
-as if they were absent.""",
+as if they were absent. Warning too for a DataType, AccessType, value or limit on the header of an
+ARRAY or RECORD whose sub-objects have their own sections: every peer reads the sub-objects and
+passes over the header's keys.""",
     "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n" + _PAIR_SUBS,
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     fix_safety="No automatic fix: delete the key.",
@@ -124,7 +126,14 @@ def forbidden_keys(ctx: Context) -> Iterator[Finding]:
                 kind = "a sub-object" if subindex is not None else f"an object of type {obj.kind.name}"
                 message = f"{where(obj, subindex)}: {key} is not allowed on {kind}"
                 finding = ctx.report("EDS024", message, ctx.at(var, key))
-                yield finding._replace(severity=W) if _says_absent(var, key, subindex is not None) else finding
+                mild = _says_absent(var, key, subindex is not None) or _header_key(obj, subindex)
+                yield finding._replace(severity=W) if mild else finding
+
+
+def _header_key(obj: Object, subindex: int | None) -> bool:
+    """A key on the header of an ARRAY or RECORD whose sub-objects have sections: every peer reads the
+    sub-objects and passes over the header's DataType, AccessType or value (python-canopen, lely)."""
+    return subindex is None and obj.kind in (ObjectKind.ARRAY, ObjectKind.RECORD) and not obj.compact_sub_obj
 
 
 def _says_absent(var: Variable, key: str, sub: bool) -> bool:

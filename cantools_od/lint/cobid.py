@@ -344,6 +344,50 @@ def check_own_collisions(ctx: Context) -> Iterator[Finding]:
 
 
 @rule(
+    "COB013",
+    E,
+    "RPDO on a CAN-ID this device sends",
+    """
+An RPDO receives what another node sends. On a CAN-ID this device produces itself (one of its
+TPDOs, its EMCY, its SDO responses, its heartbeat) it waits for its own frames, which a CAN
+controller does not receive, and no other node may send there without colliding with it: the RPDO
+never receives. `$NODEID` COB-IDs are compared for every node-ID the device may have; where they
+meet for one node-ID only and the node-ID is not known, it is a warning (the device cannot be that
+node: oresat's GPS consumes node 1's TPDO1 on 181h).""",
+    lambda: (
+        ex.NODE_5
+        + ex.pdo("tx", "0x60410010", cob="0x185")
+        + ex.pdo("rx", "0x60400010", cob="0x185")
+        + ex.STATUSWORD
+        + ex.CONTROLWORD
+    ),
+    fixed=lambda: (
+        ex.NODE_5
+        + ex.pdo("tx", "0x60410010", cob="0x185")
+        + ex.pdo("rx", "0x60400010", cob="0x205")
+        + ex.STATUSWORD
+        + ex.CONTROLWORD
+    ),
+)
+def check_rpdo_on_own_producer(ctx: Context) -> Iterator[Finding]:
+    sent = producers(ctx.device, device_pdos(ctx))
+    for pdo, cob in _pdo_cobs(ctx):
+        if pdo.direction != RX:
+            continue
+        for producer, later, node_id in collisions([*sent, cob], node_ids(ctx)):
+            if later is not cob or _restricted(cob, node_id):
+                continue  # two producers: COB009; a restricted CAN-ID: COB004
+            message = f"{pdo.name} receives on {cob.describe(node_id)}, which this device sends as {producer.role}"
+            if (cob.symbolic or producer.symbolic) and known_node_id(ctx.device, ctx.options.node_id) is None:
+                # one node-ID of many: the device only cannot take that one
+                message += f" if it is node-ID {node_id}"
+                yield with_severity(ctx.report("COB013", message, cob.location(ctx)), W)
+            else:
+                yield ctx.report("COB013", message, cob.location(ctx))
+            break
+
+
+@rule(
     "COB010",
     INFO,
     "Two RPDOs share a CAN-ID",

@@ -6,7 +6,7 @@ import re
 from collections.abc import Iterator
 
 from ..eds.keys import is_decimal, plain_int
-from ..model import Device, Object, RawSection, Severity, Variable
+from ..model import AccessType, Device, Object, RawSection, Severity, Variable
 from ..model.cia301.modules import has_module_section, object_section_name
 from ..model.datatypes import DOMAIN
 from . import examples as ex
@@ -134,6 +134,28 @@ def dcf_node_id(ctx: Context) -> Iterator[Finding]:
         yield ctx.report("EDS060", "DCF without [DeviceComissioning]", file_start(ctx))
     elif section.node_id is None and not invalid(section, "NodeID"):
         yield ctx.report("EDS060", "[DeviceComissioning] has no NodeID", ctx.at(section, "NodeID"))
+
+
+@rule(
+    "EDS064",
+    E,
+    "Constant entry with another ParameterValue",
+    """
+A `const` entry holds its DefaultValue for ever: no SDO writes it, and the device reports that
+value whatever the DCF says. A ParameterValue that differs is not what the device holds: a tool
+that configures from the DCF fails on the write (abort 0601 0002h), and one that reads the DCF
+as the device's state reads a value the device never has.""",
+    ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=8\n",
+    fixed=ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=7\n",
+)
+def const_parameter_value(ctx: Context) -> Iterator[Finding]:
+    for obj, subindex, var in checked_vars(ctx):
+        if var.access is not AccessType.CONST or var.parameter_value is None or var.default is None:
+            continue
+        configured, held = ctx.device.resolve(var.parameter_value), ctx.device.resolve(var.default)
+        if configured != held:
+            message = f"{where(obj, subindex)} is const: ParameterValue={configured!r}, but it holds {held!r}"
+            yield ctx.report("EDS064", message, ctx.value_at(var, "ParameterValue"))
 
 
 @rule(

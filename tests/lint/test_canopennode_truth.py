@@ -256,3 +256,27 @@ def test_a_moved_default_sdo_server_in_a_dcf_is_reported(tmp_path: Path) -> None
         "SDO server 1200h sub1: 0x611 is not 0x601 for node-ID 1; CiA 301 fixes the default SDO server at 0x600 "
         "+ node-ID"
     ]
+
+
+def test_an_rpdo_on_a_can_id_the_device_sends_is_reported(tmp_path: Path) -> None:
+    # sudriabotik/carte_lidar_stm32 sends TPDO1 on 183h; its RPDO1 moved there would wait for its own frames
+    copy = tmp_path / "DS301_profile.xdd"
+    text = _need(SUDRIABOTIK).read_text(encoding="utf-8")
+    copy.write_text(_edit(text, "UID_SUB_140001", 'value="0x281"', 'value="0x183"'), encoding="utf-8")
+    found = [(f["severity"], f["message"]) for f in _lint(copy) if f["code"] == "COB013"]
+    assert found == [("error", "RPDO1 receives on 183h, which this device sends as TPDO1")]
+    # oresat's GPS consumes node 1's TPDO1 on 181h and sends its own on $NODEID+0x180: it cannot be node 1
+    gps = [(f["severity"], f["message"]) for f in _lint(_need(SHARED / "eds-corpus" / "xdd" / "oresat__gps.xdd"))]
+    assert [m for m in gps if "COB013" in m[1] or "receives on" in m[1]] == [
+        ("warning", "RPDO1 receives on 181h, which this device sends as TPDO1 if it is node-ID 1")
+    ]
+
+
+PILZ = SHARED / "eds-corpus" / "eds" / "pilz__prbt_0_1.dcf"
+
+
+def test_a_const_entry_configured_otherwise_in_a_dcf_is_reported(tmp_path: Path) -> None:
+    # Pilz's PRBT DCF: 6098h homing_method is const, DefaultValue=0, ParameterValue=0
+    assert _at(_lint(_need(PILZ)), "EDS064") == []
+    copy = _edit_section(PILZ, "6098", "ParameterValue=0", "ParameterValue=35", tmp_path)
+    assert _at(_lint(copy), "EDS064") == ["[6098] is const: ParameterValue=35, but it holds 0"]

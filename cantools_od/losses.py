@@ -44,7 +44,13 @@ def losses(device: Device, written: Device, fmt: str) -> list[str]:
     if dropped:
         names = ", ".join(f"[{name}]" for name in dropped[:5]) + (" ..." if len(dropped) > 5 else "")
         found.append(f"{names} {'is' if len(dropped) == 1 else 'are'} not kept in {fmt.upper()}")
-    return found + _key_losses(device, written, fmt.upper()) + _compact_losses(device, written, fmt.upper())
+    upper = fmt.upper()
+    return (
+        found
+        + _key_losses(device, written, upper)
+        + _compact_losses(device, written, upper)
+        + _access_losses(device, written, upper)
+    )
 
 
 def _key_losses(device: Device, written: Device, fmt: str) -> list[str]:
@@ -90,6 +96,21 @@ def _twos_complement_hex(device: Device) -> list[str]:
                     found.append(f"{index:04X}" + (f"sub{subindex:X}" if subindex is not None else ""))
                     break
     return found
+
+
+def _access_losses(device: Device, written: Device, fmt: str) -> list[str]:
+    """The entries an XDD gives access="noAccess" that `written` gives an access type (an EDS has none for it)."""
+    lost = []
+    for index, obj in device.objects.items():
+        kept = written.objects.get(index)
+        for subindex, var in [(0, obj), *obj.subs.items()]:
+            again = kept.entry(subindex) if kept is not None and var is not obj else kept
+            if var.no_access and again is not None and not again.no_access:
+                lost.append(f"{index:04X}" + ("" if var is obj else f"sub{subindex:X}"))
+    if not lost:
+        return []
+    names = ", ".join(lost[:5]) + (" ..." if len(lost) > 5 else "")
+    return [f'access="noAccess" of {names} is not kept in {fmt} (no AccessType says it): written as ro']
 
 
 def _compact_losses(device: Device, written: Device, fmt: str) -> list[str]:

@@ -33,10 +33,10 @@ from ..model.canopennode import (
 )
 from ..model.datatypes import DOMAIN, INDEX_BY_NAME, REAL32, UNSIGNED8
 from . import examples as ex
-from .rules import Context, Finding, rule
+from .rules import CANOPENNODE, Context, Finding, rule
 
 E, W = Severity.ERROR, Severity.WARNING
-PROFILE = "canopennode"
+PROFILE = CANOPENNODE
 # Rule examples: an ARRAY of two INTEGER16 gains, its sub-index 0 and one gain.
 _COUNT = ("Highest sub-index supported", UNSIGNED8.index, "ro", 2)
 _GAIN = ("Gain", INDEX_BY_NAME["INTEGER16"], "rw", 0)
@@ -56,7 +56,7 @@ def _objects(ctx: Context) -> Iterator[Object]:
     if ctx.options.profile != PROFILE:
         return
     for _, obj in sorted(ctx.device.objects.items()):
-        if obj.kind in _SUPPORTED and not (obj.canopennode is not None and obj.canopennode.disabled):
+        if obj.kind in _SUPPORTED and not obj.left_out:
             yield obj
 
 
@@ -332,7 +332,7 @@ literals (`0.0f`). Fix: write the value in the entry's type.""",
 def unstorable_default(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
         for subindex, var in _entries(obj):
-            value = var.parameter_value if var.parameter_value is not None else var.default
+            value = var.held
             dtype = editor_entry_type(ctx.device, var, obj)
             bad = isinstance(value, RawValue) and not _editor_readable(dtype, value)
             if dtype is not None and dtype.index == REAL32.index and isinstance(value, (int, float)):
@@ -341,7 +341,7 @@ def unstorable_default(ctx: Context) -> Iterator[Finding]:
                 where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
                 shown = value.text if isinstance(value, RawValue) else value
                 yield ctx.report("CNO007", f"{where}: default {shown!r} cannot be stored as its type",
-                                 ctx.at(ctx.section_of(obj, var), "DefaultValue"))  # fmt: skip
+                                 ctx.at(ctx.section_of(obj, var), var.held_key))  # fmt: skip
 
 
 def _editor_readable(dtype: DataType | None, value: RawValue) -> bool:
@@ -367,11 +367,11 @@ def nodeid_elsewhere(ctx: Context) -> Iterator[Finding]:
         if any(low <= obj.index <= high for low, high in NODEID_AREAS):
             continue
         for subindex, var in _entries(obj):
-            value = var.parameter_value if var.parameter_value is not None else var.default
+            value = var.held
             if isinstance(value, NodeIdExpr):
                 where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
                 message = f"{where}: {value.canonical()} is stored as 0x{value.offset:X}; no node-ID is added here"
-                yield ctx.report("CNO008", message, ctx.at(ctx.section_of(obj, var), "DefaultValue"))
+                yield ctx.report("CNO008", message, ctx.at(ctx.section_of(obj, var), var.held_key))
 
 
 @rule(
@@ -396,12 +396,12 @@ def string_without_memory(ctx: Context) -> Iterator[Finding]:
                 continue
             if dtype.index == DOMAIN.index or var.access is None or not var.access.writable:
                 continue
-            value = var.parameter_value if var.parameter_value is not None else var.default
+            value = var.held
             minimum = var.canopennode.string_length_min if var.canopennode else None
             if not value and not minimum:
                 where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
                 message = f"{where}: writable {dtype.name} with no default and no string_length_min: no memory"
-                yield ctx.report("CNO009", message, ctx.at(ctx.section_of(obj, var), "DefaultValue"))
+                yield ctx.report("CNO009", message, ctx.at(ctx.section_of(obj, var), var.held_key))
 
 
 @rule(

@@ -2,29 +2,35 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
-from ..model import NodeIdExpr, Severity, standard_type
+from ..model import Device, NodeIdExpr, Severity, standard_type
 from ..model.assemble import construct
 from ..model.cia301.cobid import (
+    BASE_11BIT,
     BASE_29BIT,
     EXTENDED,
     HIGH_BITS,
     RTR,
+    SDO_RX_BASE,
+    SDO_TX_BASE,
     SERVICE_IDS,
     VALID,
     Cob,
+    cob_of,
     collisions,
     default_cob,
+    known_node_id,
+    predefined_pdo,
     restricted,
 )
-from ..model.cia301.connections import cob_entries, predefined_cob_base, producers
+from ..model.cia301.connections import canopennode_adds_node_id, cob_entries, predefined_cob_base, producers
 from ..model.cia301.objects import COB_ID_EMCY, FIRST_SDO_SERVER
 from ..model.cia301.pdo import COMM_SUBS, PREDEFINED, RX, TX, Pdo
 from ..model.cia301.slots import Slot, slot
 from . import examples as ex
-from .pdoread import device_pdos, first, int_value, node_ids
-from .rules import Context, Finding, rule
+from .pdoread import device_pdos, first, int_value, node_ids, with_severity
+from .rules import Context, Finding, Fix, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
@@ -95,7 +101,12 @@ def _service_id(cob: Cob, node_id: int) -> bool:
 CiA 301 reserves CAN-IDs for NMT (000h), SYNC/EMCY area below 080h, the SDO (581h-5FFh,
 601h-67Fh), NMT error control (701h-77Fh) and other services (101h-180h, 6E0h-6FFh, 780h-7FFh);
 a PDO must not use them. With `$NODEID` the COB-ID is checked for every node-ID the device may
-have, and the first one that fails is named.""",
+have, and the first one that fails is named.
+
+A CANopenNode project (written by CANopenEditor, or checked with `--profile canopennode`) may store
+a PDO's pre-defined base (0x180): the stack sends on it + node-ID (CO_PDO.c), every other tool on
+the restricted 180h. The finding then says so and offers `$NODEID+0x180` (unsafe: what peers read
+changes).""",
     lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x585") + ex.STATUSWORD,
     fixed=lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
 )
@@ -103,12 +114,30 @@ def check_restricted(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
     for pdo, cob in _pdo_cobs(ctx):
         node_id = first(cob, ids, _restricted)
-        if node_id is not None:
-            yield ctx.report(
-                "COB004",
-                f"{pdo.name}: COB-ID {cob.shown(node_id)} is a restricted CAN-ID",
-                cob.location(ctx),
+        if node_id is None:
+            continue
+        message = f"{pdo.name}: COB-ID {cob.shown(node_id)} is a restricted CAN-ID"
+        fix = None
+        if _stack_rebased(ctx, cob):
+            base = construct(NodeIdExpr, {"offset": cob.at(0)})
+            message = (
+                f"{pdo.name}: COB-ID {cob.written} is the pre-defined base: CANopenNode sends on it + node-ID, "
+                f"but every other tool reads the restricted CAN-ID {cob.describe(0)}; write {base.canonical()}"
             )
+            fix = Fix(f"write {base.canonical()}", False, _hold(cob, base))
+        yield ctx.report("COB004", message, cob.location(ctx), fix)
+
+
+def _hold(cob: Cob, value: NodeIdExpr) -> Callable[[Device], None]:
+    assert cob.slot is not None
+    index, subindex = cob.slot.owner.index, cob.slot.subindex
+
+    def apply(device: Device) -> None:
+        found = slot(device, index, subindex)
+        if found is not None:
+            found.var.hold(value)
+
+    return apply
 
 
 @rule(
@@ -159,7 +188,13 @@ CiA 301's pre-defined connection set gives EMCY (80h), the default SDO server (6
 PDOs 1-4 (RPDO 200h/300h/400h/500h, TPDO 180h/280h/380h/480h) COB-IDs of base + node-ID. An EDS
 describes every node of its kind, so it writes them as `$NODEID+0x180`: a literal such as
 `0x181` fits one node-ID only, and another base breaks the convention masters rely on.
-A disabled PDO without CAN-ID (0x80000000) is accepted. Not checked in DCFs.""",
+A disabled PDO without CAN-ID (0x80000000) is accepted. Not checked in DCFs.
+
+A fixed COB-ID is advised `$NODEID+base` only where it is base + a node-ID the device may have. An
+RPDO on another pre-defined PDO's CAN-ID (190h: TPDO1 of node 16), or a TPDO on one (210h: RPDO1 of
+node 16), usually consumes or feeds another node's PDO: `$NODEID` would break that link, so the
+finding says what it links to and advises nothing. In a CANopenNode project a COB-ID that stores the
+base itself (0x180) is what the stack adds the node-ID to (CO_PDO.c); other tools read it as is.""",
     lambda: ex.pdo("tx", "0x60410010", cob="0x181") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
@@ -174,10 +209,75 @@ def check_predefined(ctx: Context) -> Iterator[Finding]:
             problem = f"{value.canonical()} is not the pre-defined $NODEID+0x{base:X}"
         elif value & VALID and not value & BASE_29BIT:
             continue
+        elif _stack_rebased(ctx, cob) and _restricted(cob, 0):
+            continue  # COB004 says it: valid on the base, a restricted CAN-ID to every other reader
         else:
-            wanted = construct(NodeIdExpr, {"offset": (value & (VALID | RTR)) | base}).canonical()
-            problem = f"0x{value:X} fits one node-ID only; write {wanted}"
+            problem = _fixed_id(ctx, cob, value, base)
         yield ctx.report("COB006", f"{cob.role}: default COB-ID {problem}", cob.location(ctx))
+
+
+def _fixed_id(ctx: Context, cob: Cob, value: int, base: int) -> str:
+    """What a literal default COB-ID means: this node's own pre-defined CAN-ID for one node-ID (advise $NODEID),
+    the base CANopenNode adds the node-ID to, or another node's PDO it links to (no advice: $NODEID breaks it)."""
+    wanted = construct(NodeIdExpr, {"offset": (value & (VALID | RTR)) | base}).canonical()
+    can_id = value & (BASE_29BIT if value & EXTENDED else BASE_11BIT)
+    if can_id == base:
+        if _stack_rebased(ctx, cob):
+            return f"0x{value:X} is the base CANopenNode adds the node-ID to; other tools read it as is: write {wanted}"
+        return f"0x{value:X} is the base without a node-ID; write {wanted}"
+    if can_id - base in node_ids(ctx) and not value & EXTENDED:
+        return f"0x{value:X} fits one node-ID only; write {wanted}"
+    linked = predefined_pdo(can_id) if cob.role[1:4] == "PDO" and not value & EXTENDED else None
+    if linked is not None:
+        direction, number, node = linked
+        kind = "TPDO" if direction == TX else "RPDO"
+        return (
+            f"0x{value:X} is the pre-defined CAN-ID of {kind}{number} of node-ID {node}: likely a link to "
+            f"another node's PDO, which $NODEID+0x{base:X} would break; keep it if so"
+        )
+    return f"0x{value:X} is not this node's pre-defined CAN-ID: a fixed CAN-ID fits one network only"
+
+
+def _stack_rebased(ctx: Context, cob: Cob) -> bool:
+    """A CANopenNode device stores the pre-defined base and sends on base + node-ID (literal COB-IDs only)."""
+    slot_ = cob.slot
+    if not ctx.for_canopennode or slot_ is None or isinstance(cob.value, NodeIdExpr):
+        return False
+    return canopennode_adds_node_id(slot_.owner.index, slot_.subindex, cob.value)
+
+
+@rule(
+    "COB012",
+    W,
+    "Default SDO server COB-ID changed or disabled",
+    """
+CiA 301 fixes the default SDO server (1200h): its COB-IDs are 600h + node-ID (client to server)
+and 580h + node-ID (server to client), read-only. Masters reach every node there without reading
+the file, and CANopenNode writes these values into 1200h at start-up whatever the file stores. A
+file that disables them (bit 31) or moves them tells a tool that trusts it that the device has no
+SDO server, or another one. A disabled one is reported here; a moved one in an EDS by COB006, in a
+DCF here (against the commissioned node-ID).""",
+    lambda: ex.sdo_server(rx="0x80000000", tx="0x80000000"),
+    fixed=lambda: ex.sdo_server(),
+)
+def check_default_sdo_server(ctx: Context) -> Iterator[Finding]:
+    node_id = known_node_id(ctx.device, ctx.options.node_id)
+    for subindex, base in ((1, SDO_RX_BASE), (2, SDO_TX_BASE)):
+        role = f"SDO server {FIRST_SDO_SERVER:04X}h sub{subindex}"
+        cob = cob_of(slot(ctx.device, FIRST_SDO_SERVER, subindex), role)
+        problem = _sdo_server_problem(cob, base, node_id if ctx.device.is_dcf else None) if cob else None
+        if cob is not None and problem:
+            message = f"{role}: {problem}; CiA 301 fixes the default SDO server at 0x{base:X} + node-ID"
+            yield ctx.report("COB012", message, cob.location(ctx))
+
+
+def _sdo_server_problem(cob: Cob, base: int, commissioned: int | None) -> str:
+    """Disabled anywhere; moved in a DCF, against its node-ID (in an EDS COB006 says a moved one)."""
+    if cob.at(1) & VALID:
+        return f"{cob.written} disables it"
+    if commissioned is not None and cob.at(commissioned) != base + commissioned:
+        return f"{cob.written} is not 0x{base + commissioned:X} for node-ID {commissioned}"
+    return ""
 
 
 @rule(
@@ -244,6 +344,50 @@ def check_own_collisions(ctx: Context) -> Iterator[Finding]:
 
 
 @rule(
+    "COB013",
+    E,
+    "RPDO on a CAN-ID this device sends",
+    """
+An RPDO receives what another node sends. On a CAN-ID this device produces itself (one of its
+TPDOs, its EMCY, its SDO responses, its heartbeat) it waits for its own frames, which a CAN
+controller does not receive, and no other node may send there without colliding with it: the RPDO
+never receives. `$NODEID` COB-IDs are compared for every node-ID the device may have; where they
+meet for one node-ID only and the node-ID is not known, it is a warning (the device cannot be that
+node: oresat's GPS consumes node 1's TPDO1 on 181h).""",
+    lambda: (
+        ex.NODE_5
+        + ex.pdo("tx", "0x60410010", cob="0x185")
+        + ex.pdo("rx", "0x60400010", cob="0x185")
+        + ex.STATUSWORD
+        + ex.CONTROLWORD
+    ),
+    fixed=lambda: (
+        ex.NODE_5
+        + ex.pdo("tx", "0x60410010", cob="0x185")
+        + ex.pdo("rx", "0x60400010", cob="0x205")
+        + ex.STATUSWORD
+        + ex.CONTROLWORD
+    ),
+)
+def check_rpdo_on_own_producer(ctx: Context) -> Iterator[Finding]:
+    sent = producers(ctx.device, device_pdos(ctx))
+    for pdo, cob in _pdo_cobs(ctx):
+        if pdo.direction != RX:
+            continue
+        for producer, later, node_id in collisions([*sent, cob], node_ids(ctx)):
+            if later is not cob or _restricted(cob, node_id):
+                continue  # two producers: COB009; a restricted CAN-ID: COB004
+            message = f"{pdo.name} receives on {cob.describe(node_id)}, which this device sends as {producer.role}"
+            if (cob.symbolic or producer.symbolic) and known_node_id(ctx.device, ctx.options.node_id) is None:
+                # one node-ID of many: the device only cannot take that one
+                message += f" if it is node-ID {node_id}"
+                yield with_severity(ctx.report("COB013", message, cob.location(ctx)), W)
+            else:
+                yield ctx.report("COB013", message, cob.location(ctx))
+            break
+
+
+@rule(
     "COB010",
     INFO,
     "Two RPDOs share a CAN-ID",
@@ -285,11 +429,13 @@ def _comm_subs(ctx: Context) -> Iterator[tuple[Pdo, Slot]]:
 @rule(
     "PDO010",
     E,
-    "Communication record sub0 below its highest sub-index",
+    "Communication record sub0 does not match its sub-indices",
     """
 Sub0 of a PDO communication record holds the highest sub-index the record supports (2..6).
 Sub-objects above it do not exist for an SDO client, so an inhibit time or event timer
-described there is never used.""",
+described there is never used. Above the highest sub-index described, it names entries a master
+then reads and cannot (SDO abort). An RPDO's record ends at sub5 (CiA 301 §7.5.2.35), though RPDO
+and TPDO records share one table: an RPDO that describes a sub6 and counts it is a warning.""",
     lambda: (
         ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}).replace(
             "DefaultValue=5\n", "DefaultValue=2\n", 1
@@ -305,12 +451,21 @@ def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
         if pdo.comm is None or count_slot is None or highest is None:
             continue
         above = [s for s in pdo.comm.subs if s > highest]
+        where = f"{pdo.name}: {pdo.comm.index:04X}sub0 is {highest}"
         if above:
-            yield ctx.report(
-                "PDO010",
-                f"{pdo.name}: {pdo.comm.index:04X}sub0 is {highest}, but sub{max(above)} is described",
-                count_slot.location(ctx),
+            yield ctx.report("PDO010", f"{where}, but sub{max(above)} is described", count_slot.location(ctx))
+        elif highest > max(pdo.comm.subs):
+            message = f"{where}, but only sub0-sub{max(pdo.comm.subs)} are described: reading sub{highest} fails"
+            yield ctx.report("PDO010", message, count_slot.location(ctx))
+        elif pdo.direction == RX and highest > _RPDO_LAST_SUB:
+            message = (
+                f"{where}, but an RPDO's sub-indices end at {_RPDO_LAST_SUB} (sub6, SYNC start value, is a TPDO's)"
             )
+            yield with_severity(ctx.report("PDO010", message, count_slot.location(ctx)), W)
+
+
+_RPDO_LAST_SUB = 5
+"""CiA 301 §7.5.2.35: an RPDO communication record has sub-indices 1-5; sub6 (SYNC start value) is a TPDO's."""
 
 
 @rule(

@@ -128,6 +128,7 @@ NAMES: dict[str, dict[str, str]] = {
         "EDS060": "dcf-without-node-id",
         "EDS062": "node-id-out-of-range",
         "EDS063": "node-id-unconfigured",
+        "EDS064": "const-parameter-value-differs",
         "EDS070": "module-sections-inconsistent",
     },
     "objlists": {
@@ -190,6 +191,8 @@ NAMES: dict[str, dict[str, str]] = {
         "COB007": "pdo-5-plus-valid-by-default",
         "COB009": "producers-share-can-id",
         "COB010": "rpdos-share-can-id",
+        "COB012": "default-sdo-server-cob-id-changed",
+        "COB013": "rpdo-on-own-can-id",
         "PDO010": "comm-sub0-below-highest",
         "PDO011": "rpdo-inhibit-or-sync-start",
         "PDO012": "comm-sub-object-type",

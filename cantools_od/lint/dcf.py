@@ -6,7 +6,7 @@ import re
 from collections.abc import Iterator
 
 from ..eds.keys import is_decimal, plain_int
-from ..model import Device, Object, RawSection, Severity, Variable
+from ..model import AccessType, Device, Object, RawSection, Severity, Variable
 from ..model.cia301.modules import has_module_section, object_section_name
 from ..model.datatypes import DOMAIN
 from . import examples as ex
@@ -137,17 +137,42 @@ def dcf_node_id(ctx: Context) -> Iterator[Finding]:
 
 
 @rule(
+    "EDS064",
+    E,
+    "Constant entry with another ParameterValue",
+    """
+A `const` entry holds its DefaultValue for ever: no SDO writes it, and the device reports that
+value whatever the DCF says. A ParameterValue that differs is not what the device holds: a tool
+that configures from the DCF fails on the write (abort 0601 0002h), and one that reads the DCF
+as the device's state reads a value the device never has.""",
+    ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=8\n",
+    fixed=ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=7\n",
+)
+def const_parameter_value(ctx: Context) -> Iterator[Finding]:
+    for obj, subindex, var in checked_vars(ctx):
+        if var.access is not AccessType.CONST or var.parameter_value is None or var.default is None:
+            continue
+        configured, held = ctx.device.resolve(var.parameter_value), ctx.device.resolve(var.default)
+        if configured != held:
+            message = f"{where(obj, subindex)} is const: ParameterValue={configured!r}, but it holds {held!r}"
+            yield ctx.report("EDS064", message, ctx.value_at(var, "ParameterValue"))
+
+
+@rule(
     "EDS062",
     E,
     "NodeID outside 1..127",
     """
-CANopen node-IDs are 1..127. lely also writes 255 for "not configured" (EDS063).""",
+CANopen node-IDs are 1..127. lely also writes 255 for "not configured", and CANopenEditor a
+`<deviceCommissioning nodeID="0">` in a device description (.xdd): both are EDS063.""",
     "[DeviceComissioning]\nNodeID=128",
     fixed="[DeviceComissioning]\nNodeID=127",
 )
 def node_id_range(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning
     node_id = section.node_id if section is not None else None
+    if _placeholder(ctx):
+        return  # EDS063
     if section is not None and node_id is not None and not 1 <= node_id <= 127 and node_id != 255:
         yield ctx.report("EDS062", f"NodeID={node_id} is not a node-ID (1..127)", ctx.value_at(section, "NodeID"))
 
@@ -155,10 +180,11 @@ def node_id_range(ctx: Context) -> Iterator[Finding]:
 @rule(
     "EDS063",
     INFO,
-    "NodeID 255: node-ID not configured",
+    "Node-ID not configured (NodeID 255, an XDD's nodeID 0)",
     """
-lely writes `NodeID=255` (0xFF) for a node whose node-ID is assigned later (LSS). `$NODEID`
-values stay unresolved.""",
+lely writes `NodeID=255` (0xFF) for a node whose node-ID is assigned later (LSS), and
+CANopenEditor `<deviceCommissioning nodeID="0">` into every XDD device description it saves.
+`$NODEID` values stay unresolved.""",
     "[DeviceComissioning]\nNodeID=0xFF",
     fixed="[DeviceComissioning]\nNodeID=5",
 )
@@ -166,6 +192,17 @@ def node_id_unset(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning
     if section is not None and section.node_id == 255:
         yield ctx.report("EDS063", "NodeID=255: node-ID not configured", ctx.value_at(section, "NodeID"))
+    elif section is not None and _placeholder(ctx):
+        message = 'nodeID="0" in a device description: a placeholder (CANopenEditor writes it), node-ID not configured'
+        yield ctx.report("EDS063", message, ctx.value_at(section, "NodeID"))
+
+
+def _placeholder(ctx: Context) -> bool:
+    """An XDD device description (not an .xdc) whose deviceCommissioning says nodeID="0": CANopenEditor writes
+    one into every project file it saves; no node is configured by it."""
+    section, device = ctx.device.commissioning, ctx.device
+    description = device.file_format == "xdd" and not device.source.lower().endswith(".xdc")
+    return description and section is not None and section.node_id == 0
 
 
 # ---- module concept --------------------------------------------------------------------------------------------

@@ -221,3 +221,10 @@ def identity(serial: str | None = None) -> str:
         **({4: ("Serial number", 0x0007, "ro", serial)} if serial is not None else {}),
     }
     return record(0x1018, "Identity object", {0: ("Highest sub-index supported", 0x0005, "ro", max(subs)), **subs})
+
+
+def sdo_server(rx: str = "$NODEID+0x600", tx: str = "$NODEID+0x580") -> str:
+    """1200h, the default SDO server, with its two COB-IDs."""
+    highest = ("Highest sub-index supported", 0x0005, "ro", 2)
+    cobs = {1: ("COB-ID client to server", 0x0007, "ro", rx), 2: ("COB-ID server to client", 0x0007, "ro", tx)}
+    return record(0x1200, "SDO server parameter", {0: highest, **cobs})

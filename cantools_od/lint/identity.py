@@ -93,9 +93,7 @@ def _stated_identity(obj: Object, subindex: int) -> tuple[int | None, str]:
     sub = obj.subs.get(subindex)
     if sub is None:
         return None, ""
-    if sub.parameter_value is not None:
-        return plain_int(sub.parameter_value), "ParameterValue"
-    return plain_int(sub.default), "DefaultValue"
+    return plain_int(sub.held), sub.held_key
 
 
 def _fix_identity(subindex: int, field: str) -> Callable[[Device], None]:

@@ -98,7 +98,7 @@ def _report(node: _Node, message: str, location: Location, severity: Severity = 
 def lint_network(devices: list[Device], options: LintOptions) -> list[Finding]:
     """Findings about the devices as one network, each located in the file at fault."""
     nodes: list[_Node] = []
-    for device in devices:
+    for device in (device.as_built() for device in devices):
         node_id = known_node_id(device, options.node_id if device.node_id is None else None)
         nodes.append(_Node(device, Context(device, options), node_id, pdos(device)))
     findings = [*_node_ids(nodes)]

@@ -61,7 +61,11 @@ _PAIR_SUBS = (
 The obligation matrix of CiA 306 (object descriptions, §4.6.3) makes ParameterName mandatory everywhere;
 DataType and AccessType for VAR, DEFTYPE, sub-objects and CompactSubObj objects; SubNumber for
 ARRAY, RECORD and DEFSTRUCT without CompactSubObj. A missing key equals an empty one. Tools
-crash on these (lely: `KeyError: 'DataType'`) or drop the object.""",
+crash on these (lely: `KeyError: 'DataType'`) or drop the object.
+
+An XDD's `access="noAccess"` (CiA 311: the entry exists, no SDO reaches it) is a warning: an EDS
+has no AccessType that says it (`convert` writes `ro`), and CANopenEditor writes it for entries
+whose access type it lost, which a master then cannot configure.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     per_object=True,
@@ -74,11 +78,22 @@ def missing_keys(ctx: Context) -> Iterator[Finding]:
         for key in _mandatory(obj, subindex is not None):
             if xml and key == "ParameterName":
                 continue  # an XDD's missing name attribute is XDD006
-            if not given(var, key):
+            if key == "AccessType" and var.no_access:
+                yield _no_access(ctx, var, where(obj, subindex))
+            elif not given(var, key):
                 kind = "a sub-object" if subindex is not None else f"{obj.kind.name}"
                 empty = var.origin is not None and var.origin.where(key) is not None
                 message = f"{where(obj, subindex)}: {key} is empty" if empty else f"{where(obj, subindex)}: no {key}"
                 yield ctx.report("EDS020", f"{message}; {kind} needs it", ctx.at(var, key))
+
+
+def _no_access(ctx: Context, var: Variable, label: str) -> Finding:
+    """An XDD's access="noAccess" is CiA 311: the device has the entry but no SDO reaches it."""
+    message = (
+        f'{label}: access="noAccess": no SDO reads or writes it, and an EDS has no AccessType for it '
+        "(CANopenEditor writes noAccess where it does not know the access type)"
+    )
+    return ctx.report("EDS020", message, ctx.at(var, "AccessType"))._replace(severity=W)
 
 
 @rule(
@@ -94,7 +109,9 @@ and sub-objects have no SubNumber. Tools disagree about what such keys mean.
 Error, as a rule: a tool may take the key at its word (sub-objects on a VAR, a mappable DOMAIN).
 Warning where the value says what the object type already says: `SubNumber=0` on a VAR or a
 sub-object, `PDOMapping=0` on a DOMAIN (CANopenNode's editors write both); every tool reads them
-as if they were absent.""",
+as if they were absent. Warning too for a DataType, AccessType, value or limit on the header of an
+ARRAY or RECORD whose sub-objects have their own sections: every peer reads the sub-objects and
+passes over the header's keys.""",
     "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\nAccessType=ro\n\n" + _PAIR_SUBS,
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     fix_safety="No automatic fix: delete the key.",
@@ -109,7 +126,14 @@ def forbidden_keys(ctx: Context) -> Iterator[Finding]:
                 kind = "a sub-object" if subindex is not None else f"an object of type {obj.kind.name}"
                 message = f"{where(obj, subindex)}: {key} is not allowed on {kind}"
                 finding = ctx.report("EDS024", message, ctx.at(var, key))
-                yield finding._replace(severity=W) if _says_absent(var, key, subindex is not None) else finding
+                mild = _says_absent(var, key, subindex is not None) or _header_key(obj, subindex)
+                yield finding._replace(severity=W) if mild else finding
+
+
+def _header_key(obj: Object, subindex: int | None) -> bool:
+    """A key on the header of an ARRAY or RECORD whose sub-objects have sections: every peer reads the
+    sub-objects and passes over the header's DataType, AccessType or value (python-canopen, lely)."""
+    return subindex is None and obj.kind in (ObjectKind.ARRAY, ObjectKind.RECORD) and not obj.compact_sub_obj
 
 
 def _says_absent(var: Variable, key: str, sub: bool) -> bool:
@@ -269,7 +293,8 @@ def _counts_entries(obj: Object, sub0: SubObject) -> bool:
     """
 Sub-index 0 of an ARRAY or RECORD holds the highest sub-index it implements; sub-indices need not
 be consecutive (1010h may have sub0 and sub4 only, sub0=4). A smaller value hides the upper
-sub-objects. Not checked: 1003h (sub0 counts the errors), PDO objects (see the PDO rules) and
+sub-objects. The value judged is the one the device holds: a DCF's ParameterValue, else the
+DefaultValue. Not checked: 1003h (sub0 counts the errors), PDO objects (see the PDO rules) and
 objects whose sub0 is writable, where sub0 counts the valid entries.""",
     (
         "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n[2000sub0]\n"
@@ -292,12 +317,12 @@ def sub0_value(ctx: Context) -> Iterator[Finding]:
         sub0 = obj.subs.get(0)
         if not _has_subs(obj) or sub0 is None or _counts_entries(obj, sub0):
             continue
-        highest = _highest(obj)
-        if isinstance(sub0.default, int) and not isinstance(sub0.default, bool) and sub0.default < highest:
-            message = f"[{obj.index:04X}sub0]: DefaultValue={sub0.default} but sub-index {highest} exists"
+        highest, held, key = _highest(obj), sub0.held, sub0.held_key
+        if isinstance(held, int) and not isinstance(held, bool) and held < highest:
+            message = f"[{obj.index:04X}sub0]: {key}={held} but sub-index {highest} exists"
             # Unsafe: the value every reader reads changes, and a vendor's sub0 may count entries.
-            fix = Fix(f"set DefaultValue={highest}", False, _fix_sub0(obj.index))
-            yield ctx.report("EDS026", message, ctx.value_at(sub0, "DefaultValue"), fix)
+            fix = Fix(f"set {key}={highest}", False, _fix_sub0(obj.index))
+            yield ctx.report("EDS026", message, ctx.value_at(sub0, key), fix)
 
 
 def _highest(obj: Object) -> int:
@@ -308,8 +333,9 @@ def _fix_sub0(index: int) -> Callable[[Device], None]:
     def apply(device: Device) -> None:
         obj = device.objects.get(index)
         sub0 = obj.subs.get(0) if obj is not None else None
-        if obj is not None and sub0 is not None and isinstance(sub0.default, int):
-            sub0.default = max(sub0.default, _highest(obj))
+        if obj is None or sub0 is None or not isinstance(sub0.held, int):
+            return
+        sub0.hold(max(sub0.held, _highest(obj)))
 
     return apply
 

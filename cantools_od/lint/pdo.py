@@ -282,7 +282,9 @@ def check_mappable(ctx: Context) -> Iterator[Finding]:
 An RPDO writes the objects it maps, a TPDO reads them. A read-only or constant object in an
 RPDO, or a write-only object in a TPDO, is an error. rwr ("read on process input") marks an
 object for TPDOs and rww ("write on process output") one for RPDOs: rwr in an RPDO or rww in a
-TPDO is reported as a warning.""",
+TPDO is reported as a warning. CANopenEditor v4.0 wrote XDD access words inverted
+(`readWriteInput` beside `PDOmapping="RPDO"`); the OD.c it generated, which the stack follows,
+maps such an entry by its PDOmapping, and the finding says so.""",
     lambda: ex.pdo("rx", "0x60410010") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
 )
@@ -297,11 +299,14 @@ def check_direction(ctx: Context) -> Iterator[Finding]:
             wrong, restricted = not access.readable, access is AccessType.RWW
         if wrong or restricted:
             verb = "writes" if pdo.direction == RX else "reads"
-            finding = ctx.report(
-                "PDO044",
-                f"{pdo.name} {verb} {named(entry, var)}, whose access is {access.value}",
-                entry.slot.location(ctx),
-            )
+            message = f"{pdo.name} {verb} {named(entry, var)}, whose access is {access.value}"
+            stated = var.stated_pdo_mapping if var is not None else None
+            if restricted and stated == ("RPDO" if pdo.direction == RX else "TPDO"):
+                message += (
+                    f" beside PDOmapping={stated}: CANopenNode follows PDOmapping (CANopenEditor v4.0 wrote the "
+                    f"access inverted; its OD.c maps the entry into {stated}s), tools that read the access do not"
+                )
+            finding = ctx.report("PDO044", message, entry.slot.location(ctx))
             yield finding if wrong else with_severity(finding, W)
 
 

@@ -72,13 +72,12 @@ def length_fix(entry: MapEntry, bits: int) -> Fix | None:
         return None
     new = (entry.raw & ~0xFF) | bits
     index, position = entry.slot.owner.index, entry.position
-    field = "parameter_value" if entry.slot.var.parameter_value is not None else "default"
 
     def apply(device: Device) -> None:
         obj = device.objects.get(index)
         var = obj.entry(position) if obj is not None else None
         if var is not None:
-            setattr(var, field, new)
+            var.hold(new)
 
     return Fix(f"write 0x{new:08X} (mapping entry length from the mapped type)", False, apply)
 

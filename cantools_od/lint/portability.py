@@ -30,7 +30,7 @@ from .common import checked_vars, where
 from .rules import Context, Finding, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
 
-W, INFO = Severity.WARNING, Severity.INFO
+E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 _EXTENSION_KEYS = {keys.normalize(key) for key in EXTENSION_KEYS}
 _STRING_FIELDS = (("ParameterName", "name"), ("Denotation", "denotation"))
@@ -568,15 +568,15 @@ def _written(ctx: Context, section: Section, key: str) -> str | None:
 
 @rule(
     "DIA019",
-    W,
+    E,
     "Empty number in [DeviceInfo]",
     """
 An empty `VendorNumber=` or `ProductNumber=` equals a missing key in CiA 306, but python-canopen
 reads every number and flag of [DeviceInfo] (the identity, the PDO counts, the boot-up and LSS
 flags, `BaudRate_<n>`) with `int()`, and an empty value stops it loading the file at all.
 
-Warning: the file is right by CiA 306; one peer cannot load it. Write the number, or delete the
-key.""",
+Error, though the file is right by CiA 306: python-canopen cannot load it at all. Write the number,
+or delete the key.""",
     "[DeviceInfo]\nVendorName=Acme\nVendorNumber=\nProductName=Widget",
     fixed="[DeviceInfo]\nVendorName=Acme\nProductName=Widget",
     fix_safety="No automatic fix: only the vendor knows the number; deleting the key loses nothing.",
@@ -591,7 +591,7 @@ def empty_device_info_number(ctx: Context) -> Iterator[Finding]:
 
 @rule(
     "DIA020",
-    W,
+    E,
     "Octal number in [DeviceInfo]",
     """
 CiA 306 reads an integer with a leading 0 as octal: `ProductNumber=014101` is 6209, though a
@@ -599,7 +599,8 @@ vendor who wrote a catalogue number with a leading zero most likely meant 14101.
 (`int(text, 0)`) and lely's tools reject the form and fail on the file, and every reader that does
 take it may take another number than its author meant.
 
-Warning: which number is meant only the author knows; write it in decimal or as 0x hex.""",
+Error: python-canopen and lely cannot load the file, and which number is meant only the author
+knows; write it in decimal or as 0x hex.""",
     "[DeviceInfo]\nVendorName=Acme\nProductNumber=02",
     fixed="[DeviceInfo]\nVendorName=Acme\nProductNumber=2",
     fix_safety="No automatic fix: CiA 306 says 6209, the author probably meant 14101.",
@@ -617,14 +618,14 @@ def octal_device_info_number(ctx: Context) -> Iterator[Finding]:
 
 @rule(
     "DIA021",
-    W,
+    E,
     "[Comments] key in another case than Lines/Line<n>",
     """
 CiA 306 key names are case-insensitive, but python-canopen looks up `Lines` and then `Line1` ...
 `Line<Lines>` exactly as spelled here: a `line5=` (or `LINES=`) makes it fail with NoOptionError and
 load nothing at all.
 
-Warning: the file is right by CiA 306; one peer cannot load it.""",
+Error, though the file is right by CiA 306: python-canopen cannot load it at all.""",
     "[Comments]\nLines=2\nLine1=First\nline2=Second",
     fixed="[Comments]\nLines=2\nLine1=First\nLine2=Second",
     fix_safety="No automatic fix: write the key as `Lines` or `Line<n>`.",

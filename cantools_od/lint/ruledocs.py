@@ -22,7 +22,31 @@ holding the objects the stack requires), an XDD fragment inside a minimal valid 
 a section out of the frame, `; encoding:` names the file's encoding, and `; $` gives the command line
 that reports the code. The failing example reports its code (and the ones `; also:` names, which come
 with it by design) and nothing else, at the line shown; the fixed one reports nothing else.
+
 """
+
+
+# The severity policy: (severity, when, examples); every code's severity follows it (tests/lint/test_severity_policy).
+POLICY = (
+    (
+        "error",
+        "a peer tool reads the file otherwise than it says (or cannot load it), or a device built from it misbehaves",
+        "python-canopen's `int('')` on `VendorNumber=` (DIA019), a standard object of another type (STD003)",
+    ),
+    (
+        "warning",
+        "portability or style: every peer reads one meaning, but the form is not CiA 306's or a tool beyond them "
+        "reads it otherwise",
+        "a key every peer passes over (EDS024 on a RECORD header), `$NODEID` after the number (EDS033)",
+    ),
+    ("info", "a decision worth knowing, nothing wrong", "two RPDOs on one CAN-ID (COB010)"),
+)
+
+
+def _policy() -> list[str]:
+    rows = [f"| {severity} | {when} | {examples} |" for severity, when, examples in POLICY]
+    tail = "A rule may report its milder cases one step down and says so in its text."
+    return ["## Severity policy", "", "| severity | when | examples |", "|---|---|---|", *rows, "", tail, ""]
 
 
 def _block(text: str, language: str = "ini") -> list[str]:
@@ -101,7 +125,7 @@ def _body(code: Code) -> list[str]:
 
 def markdown() -> str:
     table = codes()
-    out = [_HEAD]
+    out = [_HEAD, *_policy()]
     for family, info in FAMILIES.items():
         members = [c for c in table.values() if c.family == family]
         if not members:

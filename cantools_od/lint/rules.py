@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any, NamedTuple, TypeVar
 
-from ..model import Device, Location, Object, Section, Severity, SubObject, Variable
+from ..model import Device, Dialect, Location, Object, Section, Severity, SubObject, Variable
 from ..model.canopennode import StackConfig
 from ..model.cia301.pdo import frame_bits
 from ..model.source import location
@@ -42,6 +42,10 @@ class Finding(NamedTuple):
         return f"{self.location}: {self.severity.value}: {self.message} [{self.code}]"
 
 
+CANOPENNODE = "canopennode"
+"""The profile of the CANopenNode v4 stack (lint --profile canopennode, gen -t canopennode)."""
+
+
 class LintOptions(NamedTuple):
     can_fd: bool = False
     node_id: int | None = None
@@ -64,6 +68,12 @@ class Context:
         self.memo: dict[str, Any] = {}
         """What several rules of a family derive from the device alike (walks of its entries), made once for the
         family (see `forget`)."""
+
+    @property
+    def for_canopennode(self) -> bool:
+        """The device is built with the CANopenNode stack: checked with its profile, or written by CANopenEditor
+        (an XDD with CO_* properties, an EDS with its `;StorageLocation=` lines)."""
+        return self.options.profile == CANOPENNODE or self.device.dialect is Dialect.CANOPENNODE
 
     def once(self, key: str, make: Callable[[], _T]) -> _T:
         """`make()`, made once for every rule of a family that asks under `key`."""

@@ -64,7 +64,9 @@ def linted(
     load_families()
     options = options or LintOptions()
     selection = selection or Selection()
-    context = Context(device, options)
+    # Rules judge the device as built: objects the project leaves out (CO_disabled) are not on the bus.
+    built = device.as_built()
+    context = Context(built, options)
     findings = [
         Finding(d.code, d.severity, d.message, d.location, reader_fix(context, d))
         for d in device.diagnostics
@@ -72,7 +74,7 @@ def linted(
     ]
     reuse = None
     if since is not None and since[0].options == options and since[0].selection == selection:
-        reuse = (since[0], since[1], Context(_view(device, since[1].index), options))
+        reuse = (since[0], since[1], Context(_view(built, since[1].index), options))
     per_object: dict[str, list[Finding]] = {}
     with paused():  # the walks are acyclic; a full collector pass over a large device took a fifth of its check
         for rule, found, ok in _checked(device, selection, context, reuse):

@@ -184,7 +184,9 @@ UNSIGNED16. A master reads these objects by the standard: an entry declared INTE
 UNSIGNED16 makes tools that trust the file (python-canopen, lely, generated code) decode and
 encode other bytes than the device uses, and an SDO write of the declared size is refused.
 
-Error: the file and the standard give different bytes for the same entry.
+Error: the file and the standard give different bytes for the same entry. Where the standard's peers
+agree on another type (1022h Store format: UNSIGNED16 in CANopenEditor, objdictgen and kacanopen;
+CiA 301 says UNSIGNED8), a file that follows them is not reported.
 Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.""",
     "[1000]\nParameterName=Device type\nDataType=0x0004\nAccessType=ro",
     fixed="[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro",
@@ -195,7 +197,7 @@ def data_type(ctx: Context) -> Iterator[Finding]:
             written = ctx.device.entry_type(var, obj)
             if entry.data_type is None or var.data_type is None or written is None:
                 continue  # open in the standard, or missing/undefined in the file (EDS020, EDS080)
-            if written.index == entry.data_type:
+            if written.index == entry.data_type or written.index in entry.peer_types:
                 continue
             section, key = _keys_of(ctx, obj, var, "DataType")
             message = (
@@ -365,7 +367,7 @@ def value_range(ctx: Context) -> Iterator[Finding]:
         for subindex, var, entry in _all_entries(obj, found):
             if entry.values is None or (isinstance(var, SubObject) and var.implicit):
                 continue
-            key = "ParameterValue" if var.parameter_value is not None else "DefaultValue"
+            key = var.held_key
             value = as_int(ctx.device.resolve(var.value()))
             if value is None or any(low <= value <= high for low, high in entry.values):
                 continue

@@ -338,7 +338,9 @@ def default_in_limits(ctx: Context) -> Iterator[Finding]:
     """
 A DCF's ParameterValue (and each `[xxxxValue]` entry of a CompactSubObj object, checked against
 the object's limits) is configured into the device, which refuses values outside
-LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boot-up.""",
+LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boot-up. Not checked
+on read-only (ro, const) entries: nothing configures them, their ParameterValue is what a tool read
+back from the device.""",
     (
         ex.NODE_5 + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\nHighLimit=3000\nParameterValue=5000"
@@ -351,9 +353,9 @@ LowLimit..HighLimit (SDO abort 0609 0031h/0032h); the configuration fails at boo
 )
 def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
-        value = entry.var.parameter_value
-        if value is None:
-            continue
+        value, access = entry.var.parameter_value, entry.var.access
+        if value is None or (access is not None and not access.writable):
+            continue  # a read-only entry's ParameterValue is uploaded from the device, never configured into it
         problem = _outside(ctx, entry, "ParameterValue", value)
         if problem:
             yield ctx.report("EDS061", f"{entry.label} {problem}", _at(ctx, entry, "ParameterValue"))

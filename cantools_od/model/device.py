@@ -153,6 +153,14 @@ class Device(BaseModel):
             return value.resolve(nid)
         return value
 
+    def as_built(self) -> Device:
+        """The device as built from the file: without the objects the project leaves out (`Object.left_out`).
+        Itself when there are none; otherwise a copy sharing every object."""
+        if not any(obj.left_out for obj in self.objects.values()):
+            return self
+        kept = {index: obj for index, obj in self.objects.items() if not obj.left_out}
+        return self.model_copy(update={"objects": kept})
+
     def sections(self) -> Iterator[Section]:
         """Every part of the model that a file section describes, in a fixed order."""
         yield self.file_info

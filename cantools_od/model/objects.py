@@ -41,6 +41,10 @@ class AccessType(StrEnum):
         return self in (AccessType.WO, AccessType.RW, AccessType.RWR, AccessType.RWW)
 
 
+NO_ACCESS = "noAccess"
+"""CiA 311's access of an entry no SDO reaches; an EDS has no AccessType for it. Kept as the XDD's `access`."""
+
+
 class Section(BaseModel):
     """What every section-backed part of the model keeps beside its data.
 
@@ -116,6 +120,12 @@ class Variable(Section):
         return str(stated)
 
     @property
+    def no_access(self) -> bool:
+        """The file (an XDD) says access="noAccess": the entry is in the device but no SDO reads or writes it.
+        CANopenEditor writes it for an entry whose access type it does not know."""
+        return self.access is None and self.extra.get("access") == NO_ACCESS
+
+    @property
     def dtype(self) -> DataType | None:
         return standard_type(self.data_type)
 
@@ -123,9 +133,27 @@ class Variable(Section):
     def mappable(self) -> bool:
         return bool(self.pdo_mapping)
 
+    @property
+    def held(self) -> Value | None:
+        """The value the device holds, as written: a DCF's ParameterValue (what was configured into the device,
+        or uploaded from it), else the DefaultValue. Every check and view of values reads this one."""
+        return self.parameter_value if self.parameter_value is not None else self.default
+
+    @property
+    def held_key(self) -> str:
+        """The key that writes `held`: ParameterValue or DefaultValue."""
+        return "ParameterValue" if self.parameter_value is not None else "DefaultValue"
+
+    def hold(self, value: Value) -> None:
+        """Make `value` the one the device holds: written where `held` is (ParameterValue or DefaultValue)."""
+        if self.parameter_value is not None:
+            self.parameter_value = value
+        else:
+            self.default = value
+
     def value(self, node_id: int | None = None) -> Value | None:
-        """The configured value (ParameterValue, else DefaultValue), resolved for a node-ID."""
-        value = self.parameter_value if self.parameter_value is not None else self.default
+        """The value the device holds (`held`), resolved for a node-ID."""
+        value = self.held
         if isinstance(value, NodeIdExpr) and node_id is not None:
             return value.resolve(node_id)
         return value
@@ -165,6 +193,12 @@ class Object(Variable):
     @property
     def has_subs(self) -> bool:
         return self.kind in (ObjectKind.ARRAY, ObjectKind.RECORD, ObjectKind.DEFSTRUCT)
+
+    @property
+    def left_out(self) -> bool:
+        """The project keeps the object but the device does not have it: CANopenEditor's `CO_disabled`
+        (its EDS export and its OD.c leave such objects out)."""
+        return self.canopennode is not None and bool(self.canopennode.disabled)
 
     def entry(self, subindex: int) -> Variable | None:
         """The VAR itself for sub-index 0 of a VAR, else the sub-object."""

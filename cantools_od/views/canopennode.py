@@ -276,7 +276,7 @@ class _Builder:
         dtype = editor_entry_type(self.device, var, obj)
         assert dtype is not None, "the canopennode profile refuses entries without a type"
         info = var.canopennode
-        value = var.parameter_value if var.parameter_value is not None else var.default
+        value = var.held
         where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
         if isinstance(value, NodeIdExpr):
             self.note(where, f"default {value.canonical()} stored as 0x{value.offset:X}: the stack adds the node-ID")
@@ -369,9 +369,7 @@ def _bits(directions: str) -> str:
 def generated_objects(device: Device) -> list[Object]:
     """The objects that go into the OD: VAR, DOMAIN, ARRAY and RECORD objects not disabled."""
     return [  # by index, whatever the file's order: OD_find searches the list by bisection
-        obj
-        for _, obj in sorted(device.objects.items())
-        if obj.kind in _KINDS and not (obj.canopennode is not None and obj.canopennode.disabled)
+        obj for _, obj in sorted(device.objects.items()) if obj.kind in _KINDS and not obj.left_out
     ]
 
 

@@ -194,7 +194,7 @@ def _number(value: Value | None) -> int | float | None:
 
 
 def _entry(device: Device, ids: Identifiers, obj: Object, subindex: int, var: Variable) -> EntryView:
-    value = var.parameter_value if var.parameter_value is not None else var.default
+    value = var.held
     return EntryView(
         index=obj.index,
         subindex=subindex,
@@ -220,10 +220,7 @@ def build_view(
     max_pdo_bits: int = CLASSIC_CAN_BITS,
 ) -> DeviceView:
     """The view of `device`; `problems` lists what makes generated PDO code impossible."""
-    if any(o.canopennode is not None and o.canopennode.disabled for o in device.objects.values()):
-        # CO_disabled objects stay in the project but are not in the device's dictionary.
-        enabled = {i: o for i, o in device.objects.items() if not (o.canopennode and o.canopennode.disabled)}
-        device = device.model_copy(update={"objects": enabled})
+    device = device.as_built()
     ids = identifiers or assign(device)
     objects: list[ObjectView] = []
     by_index: dict[int, ObjectView] = {}

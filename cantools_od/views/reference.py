@@ -86,7 +86,7 @@ def type_text(device: Device, entry: EntryView) -> str:
 def value_text(view: DeviceView, entry: EntryView, escape: Escape = plain, cell: Escape = plain) -> str:
     """The value the device holds (ParameterValue, else DefaultValue), as the file means it."""
     _, var = variable(view.device, entry)
-    value = var.parameter_value if var.parameter_value is not None else var.default
+    value = var.held
     if value is None:
         return NONE
     if isinstance(value, RawValue):

@@ -33,7 +33,7 @@ def _row(device: Device, index: str, sub: str, var: Variable, owner: Object, kin
     type_name = kind or (dtype.name if dtype else (f"0x{var.data_type:04X}" if var.data_type is not None else ""))
     access = var.access.value if var.access else ""
     nid = device.node_id
-    value = display(var.parameter_value if var.parameter_value is not None else var.default, nid)
+    value = display(var.held, nid)
     limits = ""
     if var.low_limit is not None or var.high_limit is not None:
         limits = f"{display(var.low_limit, nid)}..{display(var.high_limit, nid)}"

@@ -2,7 +2,8 @@
 
 CiA 306 has no place for the XML-only parts this reader keeps (profile
 headers, DeviceFunction and other elements, parameter attributes, labels,
-non-CANopenNode properties), and a key line holds at most 255 characters.
+non-CANopenNode properties), nor an access type for an entry no SDO reaches
+(access="noAccess", written as ro), and a key line holds at most 255 characters.
 Those parts are left out of an EDS written from an XDD, as CANopenEditor's own
 EDS export leaves them out; the CANopenNode storage group travels as
 `;StorageLocation=`.
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 from typing import TypeVar
 
-from ..model import Device, Object, Section
+from ..model import AccessType, Device, Object, Section, Variable
 from . import RAW_PREFIX  # not from the reader: writing an EDS needs no XML parser
 
 _LINE = 255
@@ -45,6 +46,8 @@ _S = TypeVar("_S", bound=Section)
 
 
 def _form(section: _S, **update: object) -> _S:
+    if isinstance(section, Variable) and section.no_access:
+        update["access"] = AccessType.RO  # no AccessType says "no SDO access": the least an EDS can (losses.py)
     kept = {k: v for k, v in section.extra.items() if _eds_key(k, v)}
     if len(kept) < len(section.extra):
         update["extra"] = kept

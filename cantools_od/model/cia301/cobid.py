@@ -29,6 +29,16 @@ RESTRICTED = (
 )  # fmt: skip
 
 
+def predefined_pdo(can_id: int) -> tuple[str, int, int] | None:
+    """The PDO of the pre-defined connection set an 11-bit CAN-ID belongs to: (direction, PDO number 1-4,
+    node-ID 1-127), else None. An RPDO on 190h consumes TPDO1 of node 16."""
+    for direction, bases in PREDEFINED.items():
+        for number, base in enumerate(bases, 1):
+            if 1 <= can_id - base <= 127:
+                return direction, number, can_id - base
+    return None
+
+
 def restricted(can_id: int) -> bool:
     """Whether an 11-bit CAN-ID is one a PDO must not use."""
     return any(low <= can_id <= high for low, high in RESTRICTED)

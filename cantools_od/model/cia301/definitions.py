@@ -77,6 +77,9 @@ class Entry(NamedTuple):
     silent); None where devices differ (COB-IDs, strings, PDO entries)."""
     eds_name: str | None = None
     """The ParameterName EDS files commonly give it, where that differs from the standard's name."""
+    peer_types: frozenset[int] = frozenset()
+    """Data types the peer tools give the entry instead of the standard's, which a file may follow: the
+    standard and its peers disagree, so a file agreeing with the peers is not at fault."""
 
 
 @dataclass(frozen=True)
@@ -129,9 +132,9 @@ def count_entry(
 def var(
     index: int, name: str, data_type: int, access: frozenset[AccessType], mapping: Mapping = Mapping.NO,
     clause: str = CIA301, values: tuple[tuple[int, int], ...] | None = None, usual: AccessType | None = None,
-    eds_name: str | None = None,
+    eds_name: str | None = None, peer_types: frozenset[int] = frozenset(),
 ) -> Definition:  # fmt: skip
-    entry = Entry(name, data_type, access, mapping, values, usual, eds_name)
+    entry = Entry(name, data_type, access, mapping, values, usual, eds_name, peer_types)
     return Definition(index, name, ObjectKind.VAR, clause, (entry,), eds_name=eds_name)
 
 
@@ -217,7 +220,9 @@ DEFINITIONS: tuple[Definition, ...] = (
           named=(Entry("Configuration date", UNSIGNED32, RW_OR_RO), Entry("Configuration time", UNSIGNED32, RW_OR_RO))),
     Definition(0x1021, "Store EDS", ObjectKind.DOMAIN, CIA301, (Entry("Store EDS", DOMAIN, RW_OR_RO),),
                kinds=frozenset({ObjectKind.VAR})),
-    var(0x1022, "Store format", UNSIGNED8, RW_OR_RO),
+    # CiA 301 gives UNSIGNED8; CANopenEditor's profile (every CANopenNode project), objdictgen and kacanopen
+    # define UNSIGNED16.
+    var(0x1022, "Store format", UNSIGNED8, RW_OR_RO, peer_types=frozenset({UNSIGNED16})),
     record(0x1023, "OS command", *_OS),
     var(0x1024, "OS command mode", UNSIGNED8, WO),
     record(0x1025, "OS debugger interface", *_OS),

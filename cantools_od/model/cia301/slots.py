@@ -33,7 +33,7 @@ class Slot(NamedTuple):
 
     @property
     def key(self) -> str:
-        return "ParameterValue" if self.var.parameter_value is not None else "DefaultValue"
+        return self.var.held_key
 
     @property
     def name(self) -> str:

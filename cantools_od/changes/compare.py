@@ -21,8 +21,16 @@ from ..model import (
     Value,
     Variable,
 )
-from . import describe
-from .impact import access_impact, canopennode_impact, data_type_impact, flag_impact, limit_impact, value_impact
+from . import describe, written
+from .impact import (
+    access_impact,
+    canopennode_impact,
+    data_type_impact,
+    flag_impact,
+    limit_impact,
+    pdo_direction_impact,
+    value_impact,
+)
 from .records import Change, Impact, Kind, ObjectDiff, new_change, replaced
 
 
@@ -150,7 +158,8 @@ def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> C
 
 def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     index = old.index
-    if old.kind != new.kind:
+    unread_type = "objecttype" in written.unread(old, new)  # then told by `_entry_changes`, as written
+    if old.kind != new.kind and not unread_type:
         yield new_change(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
@@ -165,8 +174,9 @@ def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     yield from _entry_changes(sides, Entry(old, old, None), Entry(new, new, None))
     if old.links != new.links:
         yield _as_text(Kind.OBJECT_LINKS, Impact.COSMETIC, index, None, "links", _links(old.links), _links(new.links))
-    # Sub-objects count only under an object type that has them (a VAR with [xxxxsubN] sections has none).
-    old_subs, new_subs = (obj.subs if obj.has_subs else {} for obj in (old, new))
+    # Sub-objects count only under an object type that has them (a VAR with [xxxxsubN] sections has none), or
+    # whose type could not be read: they are compared as written.
+    old_subs, new_subs = (obj.subs if obj.has_subs or unread_type else {} for obj in (old, new))
     for sub in sorted(set(old_subs) | set(new_subs)):
         if sub not in new_subs:
             yield _removed(sides.old, old, sub, Kind.SUB_REMOVED)
@@ -192,7 +202,7 @@ class Entry:
 def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     assert isinstance(old.var, SubObject) and isinstance(new.var, SubObject)
     before, after = old.var.object_type or ObjectKind.VAR, new.var.object_type or ObjectKind.VAR
-    if before != after:
+    if before != after and "objecttype" not in written.unread(old.var, new.var):
         yield new_change(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
@@ -208,12 +218,22 @@ def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 
 def _entry_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
-    if _compared(old.var) == _compared(new.var):
+    if _compared(old.var) == _compared(new.var) and old.var.stated_pdo_mapping == new.var.stated_pdo_mapping:
         # Most entries of two revisions are alike; only the identifier, which other entries decide, can differ.
         yield from _name(sides, old, new)
         return
+    unread = written.unread(old.var, new.var)
+    if not unread:
+        for compare in _FIELD_COMPARISONS:
+            yield from compare(sides, old, new)
+        return
+    # Keys one side wrote unreadably: compared as written, in place of their fields and `extra` keys.
+    yield from written.changes(old.var, new.var, unread, old.owner.index, old.subindex)
+    told = written.fields(unread) | {
+        f"extra.{key}" for key in (*old.var.extra, *new.var.extra) if key.lower() in unread
+    }
     for compare in _FIELD_COMPARISONS:
-        yield from compare(sides, old, new)
+        yield from (change for change in compare(sides, old, new) if change.field not in told)
 
 
 def _plain(
@@ -353,12 +373,23 @@ def _access(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 def _pdo_mapping(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     if bool(old.var.pdo_mapping) == bool(new.var.pdo_mapping):
+        yield from _pdo_direction(old, new)
         return  # an absent PDOMapping key reads as 0
     impact, note = flag_impact(old.var.pdo_mapping, new.var.pdo_mapping, "PDO-mappable")
     index, sub = old.owner.index, old.subindex
     yield _plain(
         Kind.PDO_MAPPING, impact, index, sub, "pdo_mapping", bool(old.var.pdo_mapping), bool(new.var.pdo_mapping), note
     )
+
+
+def _pdo_direction(old: Entry, new: Entry) -> Iterator[Change]:
+    """An XDD's PDOmapping word on both sides (TPDO, RPDO, optional, default): the PDOs it may be mapped into."""
+    before, after = old.var.stated_pdo_mapping, new.var.stated_pdo_mapping
+    if before is None or after is None or before == after or not old.var.pdo_mapping:
+        return
+    impact, note = pdo_direction_impact(before, after, old.var.access, new.var.access)
+    index, sub = old.owner.index, old.subindex
+    yield _as_text(Kind.PDO_MAPPING, impact, index, sub, "pdo_mapping", before, after, note)
 
 
 def _limits(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:

@@ -169,7 +169,7 @@ def label(field: str) -> str:
     if head.endswith("extra") or head.startswith("["):
         return f"{head.removesuffix('extra').rstrip('.')} key {tail}".strip()
     if head == "device_info.baud_rates":
-        return f"{tail} kbit/s"
+        return f"supported bit rate {tail} kbit/s"
     if head == "dummy_usage":
         return f"dummy usage of type 0x{tail}"
     return tail.replace("_", " ") if tail else field.replace("_", " ")

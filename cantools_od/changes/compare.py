@@ -21,7 +21,7 @@ from ..model import (
     Value,
     Variable,
 )
-from . import describe, written
+from . import describe, moves, written
 from .impact import (
     access_impact,
     canopennode_impact,
@@ -58,19 +58,19 @@ def same_value(old: Value | None, new: Value | None) -> bool:
 def object_diffs(sides: Sides) -> list[ObjectDiff]:
     """One record per object that changed, in index order."""
     diffs = []
-    moves = _moves(sides)
+    moved = _moves(sides)
+    moved_away = set(moved.values())  # reported at the index each moved to
     for index in sorted(set(sides.old.objects) | set(sides.new.objects)):
-        old, new = sides.old.objects.get(index), sides.new.objects.get(index)
-        if index in moves.values():  # reported once, at its new index
-            continue
-        if old is None and new is not None and index in moves:
-            changes = [_moved(moves[index], new)]
-        elif old is None and new is not None:
-            changes = [_added(sides.new, new, None, Kind.OBJECT_ADDED)]
-        elif new is None and old is not None:
-            changes = [_removed(sides.old, old, None, Kind.OBJECT_REMOVED)]
-        elif old is not None and new is not None:
-            changes = list(_object_changes(sides, old, new))
+        new = sides.new.objects.get(index)
+        old = sides.old.objects.get(index) if index not in moved_away else None
+        changes = [_moved(sides, moved[index], index, moved)] if index in moved else []
+        new_here = None if index in moved else new  # a moved object is told by its move alone
+        if old is None and new_here is not None:
+            changes.append(_added(sides.new, new_here, None, Kind.OBJECT_ADDED))
+        elif new_here is None and old is not None:
+            changes.append(_removed(sides.old, old, None, Kind.OBJECT_REMOVED))
+        elif old is not None and new_here is not None:
+            changes += _object_changes(sides, old, new_here)
         if changes:
             named = [_named(change, old, new) for change in changes]
             diffs.append(ObjectDiff.model_construct(index=index, name=_entry_name(old, new, None), changes=named))
@@ -78,15 +78,14 @@ def object_diffs(sides: Sides) -> list[ObjectDiff]:
 
 
 def _moves(sides: Sides) -> dict[int, int]:
-    """Objects that moved to another index with the same name and content: new index → old index."""
-    gone = {obj.name: obj for index, obj in sides.old.objects.items() if index not in sides.new.objects}
-    moves = {}
-    for index, new in sides.new.objects.items():
-        old = gone.get(new.name) if index not in sides.old.objects else None
-        if old is not None and old.kind == new.kind and not any(_shown(c) for c in _object_changes(sides, old, new)):
-            moves[index] = old.index
-            del gone[new.name]
-    return moves
+    """Objects found at another index with the same name (unique on both sides), kind and content: new index →
+    old index."""
+    found = {}
+    for index, before in moves.by_name(sides.old.objects, sides.new.objects).items():
+        old, new = sides.old.objects[before], sides.new.objects[index]
+        if old.kind == new.kind and not any(_shown(c) for c in _object_changes(sides, old, new)):
+            found[index] = before
+    return found
 
 
 def _shown(change: Change) -> bool:
@@ -94,17 +93,32 @@ def _shown(change: Change) -> bool:
     return change.old_text != change.new_text and change.kind is not Kind.IDENTIFIER
 
 
-def _moved(before: int, new: Object) -> Change:
+def _moved(sides: Sides, before: int, index: int, moved: dict[int, int]) -> Change:
+    if moves.closed(moved):  # the same objects, each at an index another had
+        where = f"{sides.new_ids.object(index)} now at 0x{index:04X}, was 0x{before:04X}"
+        note = f"meaning swapped: {where}; code and masters built for the old file address another object there"
+    elif (step := moves.step(moved)) is not None:
+        note = f"one of {len(moved)} objects shifted by {step:+d}, same name and content; a master addresses it here"
+    else:
+        note = "same name and content; a master addresses it at the new index"
+    return _move(Kind.OBJECT_MOVED, "index", (before, None), (index, None), note)
+
+
+def _move(kind: Kind, field: str, was: tuple[int, int | None], now: tuple[int, int | None], note: str) -> Change:
+    """A move between two addresses (index, sub-index); `old`/`new` hold the index of an object, the
+    sub-index of a sub-object."""
+    position = 0 if now[1] is None else 1
     return new_change(
-        kind=Kind.OBJECT_MOVED,
+        kind=kind,
         impact=Impact.BREAKING,
-        index=new.index,
-        field="index",
-        old=before,
-        new=new.index,
-        old_text=f"0x{before:04X}",
-        new_text=f"0x{new.index:04X}",
-        note="same name and content; a master addresses it at the new index",
+        index=now[0],
+        subindex=now[1],
+        field=field,
+        old=was[position],
+        new=now[position],
+        old_text=describe.address(*was),
+        new_text=describe.address(*now),
+        note=note,
     )
 
 
@@ -117,6 +131,8 @@ def _entry_name(old: Object | None, new: Object | None, subindex: int | None) ->
 
 
 def _named(change: Change, old: Object | None, new: Object | None) -> Change:
+    if change.kind is Kind.SUB_REMOVED:  # what was there: another entry may stand at its sub-index now
+        return replaced(change, name=_entry_name(None, old, change.subindex))
     return replaced(change, name=_entry_name(old, new, change.subindex))
 
 
@@ -177,13 +193,32 @@ def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     # Sub-objects count only under an object type that has them (a VAR with [xxxxsubN] sections has none), or
     # whose type could not be read: they are compared as written.
     old_subs, new_subs = (obj.subs if obj.has_subs or unread_type else {} for obj in (old, new))
+    pairs = moves.by_name(old_subs, new_subs)
+    moved_away = set(pairs.values())
     for sub in sorted(set(old_subs) | set(new_subs)):
-        if sub not in new_subs:
-            yield _removed(sides.old, old, sub, Kind.SUB_REMOVED)
-        elif sub not in old_subs:
-            yield _added(sides.new, new, sub, Kind.SUB_ADDED)
-        else:
+        if sub in pairs:
+            yield from _sub_moved(sides, old, new, pairs, sub)
+        was = sub in old_subs and sub not in moved_away
+        if was and sub in new_subs and sub not in pairs:
             yield from _sub_changes(sides, Entry(old.subs[sub], old, sub), Entry(new.subs[sub], new, sub))
+        elif was:
+            yield _removed(sides.old, old, sub, Kind.SUB_REMOVED)
+        elif sub in new_subs and sub not in pairs:
+            yield _added(sides.new, new, sub, Kind.SUB_ADDED)
+
+
+def _sub_moved(sides: Sides, old: Object, new: Object, pairs: dict[int, int], sub: int) -> Iterator[Change]:
+    """A sub-object found at another sub-index: the move, then what else changed in it (its name has not)."""
+    before = pairs[sub]
+    symbol = _known(sides.new_ids.member, new.index, sub)
+    where = f"{symbol} now at sub-index {sub}, was {before}"
+    if moves.closed(pairs):  # the same symbols, each addressing another entry
+        note = f"meaning swapped: {where}; code built for the old file reads another quantity there"
+    else:
+        note = f"{where}; code and masters built for the old file address another entry"
+    yield _move(Kind.SUB_MOVED, "subindex", (old.index, before), (new.index, sub), note)
+    compared = _sub_changes(sides, Entry(old.subs[before], old, sub), Entry(new.subs[sub], new, sub))
+    yield from (change for change in compared if change.kind not in (Kind.NAME, Kind.IDENTIFIER))
 
 
 def _links(links: list[int] | None) -> str:
@@ -395,7 +430,7 @@ def _pdo_direction(old: Entry, new: Entry) -> Iterator[Change]:
 def _limits(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     for low, field, kind in ((True, "low_limit", Kind.LOW_LIMIT), (False, "high_limit", Kind.HIGH_LIMIT)):
         before, after = getattr(old.var, field), getattr(new.var, field)
-        if same_value(before, after):
+        if same_value(before, after) or written.same_as_written(before, after):
             continue
         dtype = sides.new.entry_type(new.var, new.owner)
         impact, note = limit_impact(before, after, low, dtype, sides.new_node, new.var.access or old.var.access)
@@ -429,7 +464,11 @@ def _value_change(
 def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     for field, kind in (("default", Kind.DEFAULT), ("parameter_value", Kind.PARAMETER_VALUE)):
         before, after = getattr(old.var, field), getattr(new.var, field)
-        if same_value(before, after) or (field == "parameter_value" and _same_configured(old.var, new.var, sides)):
+        if (
+            same_value(before, after)
+            or written.same_as_written(before, after)
+            or (field == "parameter_value" and _same_configured(old.var, new.var, sides))
+        ):
             continue
         dtype = sides.new.entry_type(new.var, new.owner) or sides.old.entry_type(old.var, old.owner)
         if _same_when_resolved(before, after, sides):

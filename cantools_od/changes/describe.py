@@ -188,7 +188,7 @@ def sentence(change: Change) -> str:
         text = f"removed: {change.old_text}"
     elif kind == "not-comparable":
         text = f"{label(change.field)}: not comparable"
-    elif kind == "object-moved":
+    elif kind in ("object-moved", "sub-moved"):
         text = f"moved from {change.old_text} to {change.new_text}"
     else:
         what = label(change.field)

@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from ..eds.values import parse_int
-from ..model import AccessType, NodeIdExpr, ObjectKind, Variable, standard_type
+from ..model import AccessType, NodeIdExpr, ObjectKind, RawValue, Value, Variable, standard_type
 from .impact import access_impact, data_type_impact, flag_impact
 from .records import Change, Impact, Kind, new_change
 
@@ -173,3 +173,18 @@ def _judged(key: str, before: Meaning, after: Meaning, old_readable: bool, new_r
     if new_readable and not old_readable:
         return Impact.COMPATIBLE, f"now readable as written; meant {spec.shown(after)} before too"
     return Impact.COSMETIC, f"unreadable as written on both sides; both mean {spec.shown(after)}"
+
+
+def same_as_written(old: Value | None, new: Value | None) -> bool:
+    """A value kept as written on one side (its type could not be read) that states the number the other side
+    read: the line did not change, the reading of its type did (told as that type's change)."""
+    raw, typed = (old, new) if isinstance(old, RawValue) else (new, old)
+    if not isinstance(raw, RawValue) or isinstance(typed, (RawValue, bool)) or not isinstance(typed, (int, float)):
+        return False
+    number: float | None = _number(raw.text)
+    if number is None:
+        try:
+            number = float(_value_part(raw.text))
+        except ValueError:
+            return False
+    return number == typed

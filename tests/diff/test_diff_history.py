@@ -72,24 +72,38 @@ _INVERSE = {
     Kind.SUB_ADDED: Kind.SUB_REMOVED,
     Kind.PDO_ADDED: Kind.PDO_REMOVED,
     Kind.OBJECT_MOVED: Kind.OBJECT_MOVED,
+    Kind.SUB_MOVED: Kind.SUB_MOVED,
 }
 _INVERSE |= {after: before for before, after in _INVERSE.items()}
 
 
-def _key(change: Change, inverted: bool = False) -> tuple[object, ...]:
+def _key(
+    change: Change, inverted: bool = False, places: dict[tuple[int, int], int] | None = None
+) -> tuple[object, ...]:
+    """A change as the inverse diff tells it; `places`: sub-objects that moved, (index, sub-index) in this
+    comparison → sub-index in the other (a moved entry's changes are told where it now stands)."""
     kind = _INVERSE.get(change.kind, change.kind) if inverted else change.kind
     old, new = (change.new, change.old) if inverted else (change.old, change.new)
-    index = change.index
+    index, subindex = change.index, change.subindex
+    if index is not None and subindex is not None and places and change.kind not in _INVERSE:
+        subindex = places.get((index, subindex), subindex)
     if change.kind is Kind.OBJECT_MOVED:  # told at the index it moved to
         index = None
+    elif change.kind is Kind.SUB_MOVED:
+        subindex = None
     elif change.kind in _INVERSE:  # the entry as it was or is: the same text on the side it exists on
         old, new = change.old_text or change.new_text, ""
-    return (kind.value, index, change.subindex, change.field, repr(old), repr(new))
+    return (kind.value, index, subindex, change.field, repr(old), repr(new))
 
 
 def inverse_holds(forward: DeviceDiff, backward: DeviceDiff) -> None:
+    places = {
+        (c.index, c.subindex): c.old
+        for c in backward.changes()
+        if c.kind is Kind.SUB_MOVED and c.index is not None and c.subindex is not None and isinstance(c.old, int)
+    }
     ahead = Counter(_key(change) for change in forward.changes())
-    back = Counter(_key(change, inverted=True) for change in backward.changes())
+    back = Counter(_key(change, inverted=True, places=places) for change in backward.changes())
     assert ahead == back, (sorted(ahead - back)[:3], sorted(back - ahead)[:3])
 
 

@@ -215,7 +215,8 @@ def test_pdo_cob_id_and_transmission_type() -> None:
     text = set_key(text, "1800sub2", "DefaultValue", "1")
     (pdo,) = diff_of(text).pdos
     kinds = {(c.kind, c.impact) for c in pdo.changes}
-    assert kinds == {(Kind.PDO_COB_ID, Impact.BREAKING), (Kind.PDO_TRANSMISSION_TYPE, Impact.VALUE)}
+    # 255 → 1: sent on every SYNC instead of on change, which a master without SYNC never receives
+    assert kinds == {(Kind.PDO_COB_ID, Impact.BREAKING), (Kind.PDO_TRANSMISSION_TYPE, Impact.BREAKING)}
 
 
 def test_pdo_removed_is_breaking() -> None:
@@ -328,10 +329,18 @@ def test_pdo_timing_is_with_the_pdo() -> None:
     result = diff_of(set_key(set_key(BASE, "1800sub5", "DefaultValue", "500"), "1800sub3", "DefaultValue", "50"))
     assert not result.objects  # shown with the PDO, not again under 0x1800
     (pdo,) = result.pdos
-    shown = {(c.kind, c.index, c.subindex, c.old_text, c.new_text, c.impact) for c in pdo.changes}
-    assert shown == {
-        (Kind.PDO_TIMING, 0x1800, 3, "100 (10 ms)", "50 (5 ms)", Impact.VALUE),
-        (Kind.PDO_TIMING, 0x1800, 5, "1000 ms", "500 ms", Impact.VALUE),
+    shown = {(c.kind, c.index, c.subindex, c.old_text, c.new_text, c.impact, c.note) for c in pdo.changes}
+    assert shown == {  # TPDO1 is event-driven: both change its traffic
+        (
+            Kind.PDO_TIMING,
+            0x1800,
+            3,
+            "100 (10 ms)",
+            "50 (5 ms)",
+            Impact.BREAKING,
+            "now at most every 5 ms instead of every 10 ms",
+        ),
+        (Kind.PDO_TIMING, 0x1800, 5, "1000 ms", "500 ms", Impact.BREAKING, "now every 500 ms instead of every 1000 ms"),
     }
     assert pdo.after is not None and pdo.after.timing == {3: 50, 5: 500}
 

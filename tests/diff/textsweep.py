@@ -138,7 +138,7 @@ def formatting(line: Line) -> bool:
 
 
 _WHOLE = {Kind.OBJECT_ADDED, Kind.OBJECT_REMOVED, Kind.OBJECT_MOVED, Kind.OBJECT_TYPE}
-_ENTRY = {Kind.SUB_ADDED, Kind.SUB_REMOVED}
+_ENTRY = {Kind.SUB_ADDED, Kind.SUB_REMOVED, Kind.SUB_MOVED}
 
 
 def told(line: Line, result: DeviceDiff) -> bool:
@@ -157,6 +157,8 @@ def told(line: Line, result: DeviceDiff) -> bool:
         ):
             return True
         if line.key in COUNTS and change.kind in _ENTRY:
+            return True
+        if change.kind is Kind.SUB_MOVED and change.old == sub:  # moved away from this sub-index
             return True
     return _pdo_told(line, result)
 

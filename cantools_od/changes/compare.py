@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from operator import attrgetter
 
@@ -70,11 +70,20 @@ def object_diffs(sides: Sides) -> list[ObjectDiff]:
         elif new_here is None and old is not None:
             changes.append(_removed(sides.old, old, None, Kind.OBJECT_REMOVED))
         elif old is not None and new_here is not None:
-            changes += _object_changes(sides, old, new_here)
+            changes += _outside(old, new_here, _object_changes(sides, old, new_here))
         if changes:
             named = [_named(change, old, new) for change in changes]
             diffs.append(ObjectDiff.model_construct(index=index, name=_entry_name(old, new, None), changes=named))
     return diffs
+
+
+def _outside(old: Object, new: Object, changes: Iterable[Change]) -> list[Change]:
+    """The changes of an object disabled on both sides, which the device has on neither: cosmetic."""
+    if not (_disabled(old) and _disabled(new)):
+        return list(changes)
+    return [
+        replaced(change, impact=Impact.COSMETIC, note=f"{_OUTSIDE}; {change.note}".rstrip("; ")) for change in changes
+    ]
 
 
 def _moves(sides: Sides) -> dict[int, int]:
@@ -158,18 +167,28 @@ def _var_summary(device: Device, var: Variable, owner: Object) -> str:
     return ", ".join(parts)
 
 
+_OUTSIDE = "disabled: outside the device on both sides, the OD neither gains nor loses it"
+
+
+def _disabled(obj: Object) -> bool:
+    """CO_disabled: left out of the OD CANopenNode generates, so not in the device."""
+    return bool(obj.canopennode and obj.canopennode.disabled)
+
+
 def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
     var = obj if subindex is None else obj.subs[subindex]
     shown = _summary(device, var, obj)
+    impact, note = (Impact.COSMETIC, _OUTSIDE) if _disabled(obj) else (Impact.COMPATIBLE, "")
     return new_change(
-        kind=kind, impact=Impact.COMPATIBLE, index=obj.index, subindex=subindex, new=var.name, new_text=shown
+        kind=kind, impact=impact, index=obj.index, subindex=subindex, new=var.name, new_text=shown, note=note
     )
 
 
 def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
-    """The other side of `_added`: what was there, now gone."""
+    """The other side of `_added`: what was there, now gone (breaking, unless it was never in the device)."""
     added = _added(device, obj, subindex, kind)
-    return replaced(added, impact=Impact.BREAKING, old=added.new, old_text=added.new_text, new=None, new_text="")
+    impact = Impact.COSMETIC if _disabled(obj) else Impact.BREAKING
+    return replaced(added, impact=impact, old=added.new, old_text=added.new_text, new=None, new_text="")
 
 
 def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:

@@ -193,7 +193,11 @@ def canopennode_impact(field: str, old: object, new: object) -> tuple[Impact, st
     """CANopenNode properties: the storage group and count label decide generated code; a disabled object is
     left out of the generated OD (and so gone from the bus)."""
     if field == "disabled":
-        return flag_impact(not old, not new, "in the generated CANopenNode OD (CO_disabled)")
+        if bool(old) == bool(new):
+            return Impact.COSMETIC, "unset reads as enabled"
+        if new:
+            return Impact.BREAKING, "disabled (CO_disabled): the OD loses it, and the bus with it"
+        return Impact.COMPATIBLE, "enabled (CO_disabled no longer set): the OD gains it"
     if field in ("storage_group", "count_label") and old is not None and new is not None:
         what = "storage group" if field == "storage_group" else "OD_CNT_ count"
         return Impact.BREAKING, f"generated code and the stored layout change ({what})"

@@ -20,8 +20,8 @@ VALUE_KINDS = (Kind.DEFAULT, Kind.PARAMETER_VALUE, Kind.NODEID_FORM)
 
 def pdo_diffs(sides: Sides) -> list[PdoDiff]:
     """The PDOs that were added, removed or changed, RPDOs first."""
-    old = {(p.direction, p.number): p for p in pdo_map(sides.old, sides.old_node, sides.old_ids)}
-    new = {(p.direction, p.number): p for p in pdo_map(sides.new, sides.new_node, sides.new_ids)}
+    old = {(p.direction, p.number): p for p in _in_device(sides.old, pdo_map(sides.old, sides.old_node, sides.old_ids))}
+    new = {(p.direction, p.number): p for p in _in_device(sides.new, pdo_map(sides.new, sides.new_node, sides.new_ids))}
     diffs = []
     for key in sorted(set(old) | set(new), key=lambda k: (k[0] != "rx", k[1])):
         before, after = old.get(key), new.get(key)
@@ -46,6 +46,17 @@ def pdo_diffs(sides: Sides) -> list[PdoDiff]:
                 )
             )
     return diffs
+
+
+def _in_device(device: Device, pdos: list[Pdo]) -> list[Pdo]:
+    """The PDOs the device has: not those whose communication or mapping object is CO_disabled (left out of the
+    OD CANopenNode generates)."""
+
+    def disabled(index: int) -> bool:
+        obj = device.objects.get(index)
+        return obj is not None and obj.canopennode is not None and bool(obj.canopennode.disabled)
+
+    return [pdo for pdo in pdos if not (disabled(pdo.comm_index) or disabled(pdo.map_index))]
 
 
 def _layout(pdo: Pdo) -> tuple[tuple[int, int, int, int], ...]:

@@ -218,3 +218,47 @@ def test_objects_that_trade_indices_swap_meaning(tmp_path: Path) -> None:
         ("object-moved", 0x5500, 0x5501, ["wire", "code"]),
     ]
     assert all(c["note"].startswith("meaning swapped: ") for c in told)
+
+
+def _without_objects(eds: str, indices: set[int]) -> str:
+    """An EDS without these objects' sections, as CANopenEditor exports one beside its XDD (CANopenDemo's
+    demoDevice.eds leaves out the object its demoDevice.xdd disables)."""
+    kept = []
+    for block in re.split(r"(?m)^(?=\[)", eds):
+        name = re.match(r"\[([0-9A-Fa-f]{4})(?:sub[0-9A-Fa-f]+|Name|Value)?\]", block)
+        if name is None or int(name[1], 16) not in indices:
+            kept.append(block)
+    return "".join(kept)
+
+
+def test_disabled_objects_are_outside_the_device_on_both_sides(tmp_path: Path) -> None:
+    """EvgenyDD sh_node 4's XDD disables 29 objects (CO_disabled); the EDS exported beside it has none of
+    them. Neither device has them: nothing is removed or added for the bus or the code."""
+    _, xdd = history_pair("EvgenyDD__sh_node__4")
+    disabled = {int(i, 16) for i in re.findall(r'index="([0-9A-F]{4})"', xdd.read_text(encoding="utf-8"))}
+    converted = tmp_path / "profile.eds"
+    assert run("convert", xdd, "-o", converted).returncode == 0
+    from cantools_od import load
+
+    disabled = {i for i in disabled if (c := load(xdd).objects[i].canopennode) is not None and c.disabled}
+    assert len(disabled) == 29
+    exported = tmp_path / "exported.eds"
+    exported.write_text(_without_objects(converted.read_text(encoding="utf-8"), disabled), encoding="utf-8")
+    for old, new in ((xdd, exported), (exported, xdd)):
+        data, result = report(old, new, "--fail-on", "breaking")
+        assert result.returncode == 0, [c for c in changes(data) if c["impact"] == "breaking"][:3]
+        whole = [c for c in changes(data) if c["kind"] in ("object-added", "object-removed")]
+        assert {c["index"] for c in whole} == disabled
+        assert all(c["impact"] == "cosmetic" and "outside the device" in c["note"] for c in whole)
+
+
+def test_enabled_and_disabled_by_what_the_od_gains_or_loses() -> None:
+    """EvgenyDD sh_gateway 3: the first RPDO and TPDO enabled (CO_disabled dropped): the OD gains them."""
+    old, new = history_pair("EvgenyDD__sh_gateway__3")
+    data, _ = report(old, new)
+    enabled = [c for c in changes(data) if c["field"] == "canopennode.disabled"]
+    assert {c["index"] for c in enabled} == {0x1400, 0x1600, 0x1800, 0x1A00}
+    assert all(c["impact"] == "compatible" and c["note"].startswith("enabled") for c in enabled)
+    back, _ = report(new, old)
+    disabled = [c for c in changes(back) if c["field"] == "canopennode.disabled"]
+    assert all(c["breaks"] == ["wire", "code"] and c["note"].startswith("disabled") for c in disabled)

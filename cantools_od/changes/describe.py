@@ -166,6 +166,8 @@ def label(field: str) -> str:
     if field in _LABELS:
         return _LABELS[field]
     head, _, tail = field.rpartition(".")
+    if head.endswith("spelling"):
+        return "section name as written" if tail == "section" else f"key {tail} as written"
     if head.endswith("extra") or head.startswith("["):
         return f"{head.removesuffix('extra').rstrip('.')} key {tail}".strip()
     if head == "device_info.baud_rates":

@@ -82,6 +82,7 @@ class Kind(StrEnum):
     PDO_TRANSMISSION_TYPE = "pdo-transmission-type"
     PDO_TIMING = "pdo-timing"
     NOT_COMPARABLE = "not-comparable"
+    PEER_READING = "peer-reading"
     PDO_LAYOUT = "pdo-layout"
 
 

@@ -262,3 +262,22 @@ def test_enabled_and_disabled_by_what_the_od_gains_or_loses() -> None:
     back, _ = report(new, old)
     disabled = [c for c in changes(back) if c["field"] == "canopennode.disabled"]
     assert all(c["breaks"] == ["wire", "code"] and c["note"].startswith("disabled") for c in disabled)
+
+
+def test_key_spelling_python_canopen_reads_differently(tmp_path: Path) -> None:
+    """dianhuaeven Eyou_Canopen_master 2's DCF writes `Baudrate=1000` in [DeviceComissioning]; spelled
+    `BaudRate=1000`, CiA 306 and lely read the same, python-canopen no bit rate (DIA018). The change is told."""
+    _, dcf = history_pair("dianhuaeven__Eyou_Canopen_master__2")
+    respelled = _edited(tmp_path, dcf, "respelled.dcf", [("DeviceComissioning", "Baudrate", None)])
+    respelled.write_text(
+        set_key(respelled.read_text(encoding="latin-1"), "DeviceComissioning", "BaudRate", "1000"), encoding="latin-1"
+    )
+    from canopen import import_od
+
+    assert (import_od(str(respelled)).bitrate, import_od(str(dcf)).bitrate) == (None, 1_000_000)
+    gate = run("diff", respelled, dcf, "--fail-on", "any")
+    assert gate.returncode == 1, gate.stdout
+    data, _ = report(respelled, dcf)
+    (told,) = [c for c in changes(data) if c["kind"] == "peer-reading"]
+    assert (told["old_text"], told["new_text"]) == ("BaudRate", "Baudrate")
+    assert told["note"] == "python-canopen now reads this key in [DeviceComissioning]: it did not before"

@@ -69,7 +69,11 @@ def spelling_changes(old: Device, new: Device) -> Iterator[Change]:
             continue
         if not (before.origin and before.origin.spelled) and not (after.origin and after.origin.spelled):
             continue  # the common case: both written as CiA 306 spells them
-        for name in sorted(_names(before, after)):
+        was, now = _found(before, ""), _found(after, "")
+        if was is not None and now is not None and was != now:  # the section itself: its keys go with it
+            yield _change(where, index, sub, "", before, after, now)
+            continue
+        for name in sorted(_names(before, after) - {""}):
             was, now = _found(before, name), _found(after, name)
             if was is None or now is None or was == now:
                 continue

@@ -18,11 +18,16 @@ def test_the_same_file_has_no_changes() -> None:
 
 
 def test_spelling_only_is_no_change() -> None:
-    """Radix, key case, blanks around `=` and section order change nothing."""
+    """Radix, the case of a key no peer looks up by case, of an access type, blanks around `=` and section order
+    change nothing; the case of a key python-canopen looks up is what it reads differently."""
     text = set_key(BASE, "1017", "DefaultValue", "0x3E8")  # 1000 in hex
-    text = text.replace("ParameterName=Producer heartbeat time", "parametername=Producer heartbeat time")
-    text = text.replace("AccessType=rw\nDefaultValue=0x3E8", "ACCESSTYPE = RW\nDefaultValue=0x3E8")
+    text = text.replace("SubNumber=5", "SUBNUMBER=5")
+    text = text.replace("AccessType=rw\nDefaultValue=0x3E8", "AccessType = RW\nDefaultValue=0x3E8")
     assert diff_of(text).empty
+    respelled = text.replace("ParameterName=Producer heartbeat time", "parametername=Producer heartbeat time")
+    assert [(c.kind, c.index, c.field) for c in diff_of(respelled).changes()] == [
+        (Kind.PEER_READING, 0x1017, "spelling.ParameterName")
+    ]
     reordered = drop_section(BASE, "1017") + "\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\n"
     reordered += "DataType=0x0006\nAccessType=rw\nDefaultValue=1000\nPDOMapping=0\n"
     assert diff_of(reordered).empty

@@ -10,7 +10,7 @@ from collections.abc import Mapping
 
 from ..identifiers import assign, load_pins
 from ..model import Device
-from . import formats
+from . import formats, peers
 from .compare import Sides, object_diffs
 from .device import device_changes
 from .pdos import VALUE_KINDS, absorbed, pdo_diffs
@@ -91,7 +91,10 @@ def compare(
         ]
         if kept:
             objects.append(obj.model_copy(update={"changes": kept}))
+    spelled = list(peers.spelling_changes(old, new))
+    objects = _with(objects, [change for change in spelled if change.index is not None])
     device = [change for change in device_changes(old, new) if _told(change)]
+    device += [change for change in spelled if change.index is None]
     everything = device + [change for obj in objects for change in obj.changes]
     kept, not_comparable = formats.split(old.source, new.source, everything)
     if not_comparable:
@@ -103,6 +106,20 @@ def compare(
             if any(id(c) in chosen for c in obj.changes)
         ]
     return DeviceDiff.model_construct(old=old.source, new=new.source, device=device, objects=objects, pdos=pdos)
+
+
+def _with(objects: list[ObjectDiff], changes: list[Change]) -> list[ObjectDiff]:
+    """The object records with these changes added, each to its object's record (made when missing)."""
+    if not changes:
+        return objects
+    by_index = {obj.index: obj for obj in objects}
+    for change in changes:
+        assert change.index is not None
+        found = by_index.get(change.index)
+        if found is None:
+            found = ObjectDiff.model_construct(index=change.index, name=change.name, changes=[])
+        by_index[change.index] = found.model_copy(update={"changes": [*found.changes, change]})
+    return [by_index[index] for index in sorted(by_index)]
 
 
 _WHOLE = frozenset({Kind.OBJECT_ADDED, Kind.OBJECT_REMOVED, Kind.SUB_ADDED, Kind.SUB_REMOVED})

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from operator import attrgetter
 
@@ -21,8 +21,16 @@ from ..model import (
     Value,
     Variable,
 )
-from . import describe
-from .impact import access_impact, canopennode_impact, data_type_impact, flag_impact, limit_impact, value_impact
+from . import describe, moves, written
+from .impact import (
+    access_impact,
+    canopennode_impact,
+    data_type_impact,
+    flag_impact,
+    limit_impact,
+    pdo_direction_impact,
+    value_impact,
+)
 from .records import Change, Impact, Kind, ObjectDiff, new_change, replaced
 
 
@@ -50,35 +58,43 @@ def same_value(old: Value | None, new: Value | None) -> bool:
 def object_diffs(sides: Sides) -> list[ObjectDiff]:
     """One record per object that changed, in index order."""
     diffs = []
-    moves = _moves(sides)
+    moved = _moves(sides)
+    moved_away = set(moved.values())  # reported at the index each moved to
     for index in sorted(set(sides.old.objects) | set(sides.new.objects)):
-        old, new = sides.old.objects.get(index), sides.new.objects.get(index)
-        if index in moves.values():  # reported once, at its new index
-            continue
-        if old is None and new is not None and index in moves:
-            changes = [_moved(moves[index], new)]
-        elif old is None and new is not None:
-            changes = [_added(sides.new, new, None, Kind.OBJECT_ADDED)]
-        elif new is None and old is not None:
-            changes = [_removed(sides.old, old, None, Kind.OBJECT_REMOVED)]
-        elif old is not None and new is not None:
-            changes = list(_object_changes(sides, old, new))
+        new = sides.new.objects.get(index)
+        old = sides.old.objects.get(index) if index not in moved_away else None
+        changes = [_moved(sides, moved[index], index, moved)] if index in moved else []
+        new_here = None if index in moved else new  # a moved object is told by its move alone
+        if old is None and new_here is not None:
+            changes.append(_added(sides.new, new_here, None, Kind.OBJECT_ADDED))
+        elif new_here is None and old is not None:
+            changes.append(_removed(sides.old, old, None, Kind.OBJECT_REMOVED))
+        elif old is not None and new_here is not None:
+            changes += _outside(old, new_here, _object_changes(sides, old, new_here))
         if changes:
             named = [_named(change, old, new) for change in changes]
             diffs.append(ObjectDiff.model_construct(index=index, name=_entry_name(old, new, None), changes=named))
     return diffs
 
 
+def _outside(old: Object, new: Object, changes: Iterable[Change]) -> list[Change]:
+    """The changes of an object disabled on both sides, which the device has on neither: cosmetic."""
+    if not (_disabled(old) and _disabled(new)):
+        return list(changes)
+    return [
+        replaced(change, impact=Impact.COSMETIC, note=f"{_OUTSIDE}; {change.note}".rstrip("; ")) for change in changes
+    ]
+
+
 def _moves(sides: Sides) -> dict[int, int]:
-    """Objects that moved to another index with the same name and content: new index → old index."""
-    gone = {obj.name: obj for index, obj in sides.old.objects.items() if index not in sides.new.objects}
-    moves = {}
-    for index, new in sides.new.objects.items():
-        old = gone.get(new.name) if index not in sides.old.objects else None
-        if old is not None and old.kind == new.kind and not any(_shown(c) for c in _object_changes(sides, old, new)):
-            moves[index] = old.index
-            del gone[new.name]
-    return moves
+    """Objects found at another index with the same name (unique on both sides), kind and content: new index →
+    old index."""
+    found = {}
+    for index, before in moves.by_name(sides.old.objects, sides.new.objects).items():
+        old, new = sides.old.objects[before], sides.new.objects[index]
+        if old.kind == new.kind and not any(_shown(c) for c in _object_changes(sides, old, new)):
+            found[index] = before
+    return found
 
 
 def _shown(change: Change) -> bool:
@@ -86,17 +102,32 @@ def _shown(change: Change) -> bool:
     return change.old_text != change.new_text and change.kind is not Kind.IDENTIFIER
 
 
-def _moved(before: int, new: Object) -> Change:
+def _moved(sides: Sides, before: int, index: int, moved: dict[int, int]) -> Change:
+    if moves.closed(moved):  # the same objects, each at an index another had
+        where = f"{sides.new_ids.object(index)} now at 0x{index:04X}, was 0x{before:04X}"
+        note = f"meaning swapped: {where}; code and masters built for the old file address another object there"
+    elif (step := moves.step(moved)) is not None:
+        note = f"one of {len(moved)} objects shifted by {step:+d}, same name and content; a master addresses it here"
+    else:
+        note = "same name and content; a master addresses it at the new index"
+    return _move(Kind.OBJECT_MOVED, "index", (before, None), (index, None), note)
+
+
+def _move(kind: Kind, field: str, was: tuple[int, int | None], now: tuple[int, int | None], note: str) -> Change:
+    """A move between two addresses (index, sub-index); `old`/`new` hold the index of an object, the
+    sub-index of a sub-object."""
+    position = 0 if now[1] is None else 1
     return new_change(
-        kind=Kind.OBJECT_MOVED,
+        kind=kind,
         impact=Impact.BREAKING,
-        index=new.index,
-        field="index",
-        old=before,
-        new=new.index,
-        old_text=f"0x{before:04X}",
-        new_text=f"0x{new.index:04X}",
-        note="same name and content; a master addresses it at the new index",
+        index=now[0],
+        subindex=now[1],
+        field=field,
+        old=was[position],
+        new=now[position],
+        old_text=describe.address(*was),
+        new_text=describe.address(*now),
+        note=note,
     )
 
 
@@ -109,6 +140,8 @@ def _entry_name(old: Object | None, new: Object | None, subindex: int | None) ->
 
 
 def _named(change: Change, old: Object | None, new: Object | None) -> Change:
+    if change.kind is Kind.SUB_REMOVED:  # what was there: another entry may stand at its sub-index now
+        return replaced(change, name=_entry_name(None, old, change.subindex))
     return replaced(change, name=_entry_name(old, new, change.subindex))
 
 
@@ -134,23 +167,34 @@ def _var_summary(device: Device, var: Variable, owner: Object) -> str:
     return ", ".join(parts)
 
 
+_OUTSIDE = "disabled: outside the device on both sides, the OD neither gains nor loses it"
+
+
+def _disabled(obj: Object) -> bool:
+    """CO_disabled: left out of the OD CANopenNode generates, so not in the device."""
+    return bool(obj.canopennode and obj.canopennode.disabled)
+
+
 def _added(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
     var = obj if subindex is None else obj.subs[subindex]
     shown = _summary(device, var, obj)
+    impact, note = (Impact.COSMETIC, _OUTSIDE) if _disabled(obj) else (Impact.COMPATIBLE, "")
     return new_change(
-        kind=kind, impact=Impact.COMPATIBLE, index=obj.index, subindex=subindex, new=var.name, new_text=shown
+        kind=kind, impact=impact, index=obj.index, subindex=subindex, new=var.name, new_text=shown, note=note
     )
 
 
 def _removed(device: Device, obj: Object, subindex: int | None, kind: Kind) -> Change:
-    """The other side of `_added`: what was there, now gone."""
+    """The other side of `_added`: what was there, now gone (breaking, unless it was never in the device)."""
     added = _added(device, obj, subindex, kind)
-    return replaced(added, impact=Impact.BREAKING, old=added.new, old_text=added.new_text, new=None, new_text="")
+    impact = Impact.COSMETIC if _disabled(obj) else Impact.BREAKING
+    return replaced(added, impact=impact, old=added.new, old_text=added.new_text, new=None, new_text="")
 
 
 def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     index = old.index
-    if old.kind != new.kind:
+    unread_type = "objecttype" in written.unread(old, new)  # then told by `_entry_changes`, as written
+    if old.kind != new.kind and not unread_type:
         yield new_change(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
@@ -165,15 +209,35 @@ def _object_changes(sides: Sides, old: Object, new: Object) -> Iterator[Change]:
     yield from _entry_changes(sides, Entry(old, old, None), Entry(new, new, None))
     if old.links != new.links:
         yield _as_text(Kind.OBJECT_LINKS, Impact.COSMETIC, index, None, "links", _links(old.links), _links(new.links))
-    # Sub-objects count only under an object type that has them (a VAR with [xxxxsubN] sections has none).
-    old_subs, new_subs = (obj.subs if obj.has_subs else {} for obj in (old, new))
+    # Sub-objects count only under an object type that has them (a VAR with [xxxxsubN] sections has none), or
+    # whose type could not be read: they are compared as written.
+    old_subs, new_subs = (obj.subs if obj.has_subs or unread_type else {} for obj in (old, new))
+    pairs = moves.by_name(old_subs, new_subs)
+    moved_away = set(pairs.values())
     for sub in sorted(set(old_subs) | set(new_subs)):
-        if sub not in new_subs:
-            yield _removed(sides.old, old, sub, Kind.SUB_REMOVED)
-        elif sub not in old_subs:
-            yield _added(sides.new, new, sub, Kind.SUB_ADDED)
-        else:
+        if sub in pairs:
+            yield from _sub_moved(sides, old, new, pairs, sub)
+        was = sub in old_subs and sub not in moved_away
+        if was and sub in new_subs and sub not in pairs:
             yield from _sub_changes(sides, Entry(old.subs[sub], old, sub), Entry(new.subs[sub], new, sub))
+        elif was:
+            yield _removed(sides.old, old, sub, Kind.SUB_REMOVED)
+        elif sub in new_subs and sub not in pairs:
+            yield _added(sides.new, new, sub, Kind.SUB_ADDED)
+
+
+def _sub_moved(sides: Sides, old: Object, new: Object, pairs: dict[int, int], sub: int) -> Iterator[Change]:
+    """A sub-object found at another sub-index: the move, then what else changed in it (its name has not)."""
+    before = pairs[sub]
+    symbol = _known(sides.new_ids.member, new.index, sub)
+    where = f"{symbol} now at sub-index {sub}, was {before}"
+    if moves.closed(pairs):  # the same symbols, each addressing another entry
+        note = f"meaning swapped: {where}; code built for the old file reads another quantity there"
+    else:
+        note = f"{where}; code and masters built for the old file address another entry"
+    yield _move(Kind.SUB_MOVED, "subindex", (old.index, before), (new.index, sub), note)
+    compared = _sub_changes(sides, Entry(old.subs[before], old, sub), Entry(new.subs[sub], new, sub))
+    yield from (change for change in compared if change.kind not in (Kind.NAME, Kind.IDENTIFIER))
 
 
 def _links(links: list[int] | None) -> str:
@@ -192,7 +256,7 @@ class Entry:
 def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     assert isinstance(old.var, SubObject) and isinstance(new.var, SubObject)
     before, after = old.var.object_type or ObjectKind.VAR, new.var.object_type or ObjectKind.VAR
-    if before != after:
+    if before != after and "objecttype" not in written.unread(old.var, new.var):
         yield new_change(
             kind=Kind.OBJECT_TYPE,
             impact=Impact.BREAKING,
@@ -208,12 +272,22 @@ def _sub_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 
 def _entry_changes(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
-    if _compared(old.var) == _compared(new.var):
+    if _compared(old.var) == _compared(new.var) and old.var.stated_pdo_mapping == new.var.stated_pdo_mapping:
         # Most entries of two revisions are alike; only the identifier, which other entries decide, can differ.
         yield from _name(sides, old, new)
         return
+    unread = written.unread(old.var, new.var)
+    if not unread:
+        for compare in _FIELD_COMPARISONS:
+            yield from compare(sides, old, new)
+        return
+    # Keys one side wrote unreadably: compared as written, in place of their fields and `extra` keys.
+    yield from written.changes(old.var, new.var, unread, old.owner.index, old.subindex)
+    told = written.fields(unread) | {
+        f"extra.{key}" for key in (*old.var.extra, *new.var.extra) if key.lower() in unread
+    }
     for compare in _FIELD_COMPARISONS:
-        yield from compare(sides, old, new)
+        yield from (change for change in compare(sides, old, new) if change.field not in told)
 
 
 def _plain(
@@ -353,6 +427,7 @@ def _access(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
 
 def _pdo_mapping(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     if bool(old.var.pdo_mapping) == bool(new.var.pdo_mapping):
+        yield from _pdo_direction(old, new)
         return  # an absent PDOMapping key reads as 0
     impact, note = flag_impact(old.var.pdo_mapping, new.var.pdo_mapping, "PDO-mappable")
     index, sub = old.owner.index, old.subindex
@@ -361,10 +436,20 @@ def _pdo_mapping(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     )
 
 
+def _pdo_direction(old: Entry, new: Entry) -> Iterator[Change]:
+    """An XDD's PDOmapping word on both sides (TPDO, RPDO, optional, default): the PDOs it may be mapped into."""
+    before, after = old.var.stated_pdo_mapping, new.var.stated_pdo_mapping
+    if before is None or after is None or before == after or not old.var.pdo_mapping:
+        return
+    impact, note = pdo_direction_impact(before, after, old.var.access, new.var.access)
+    index, sub = old.owner.index, old.subindex
+    yield _as_text(Kind.PDO_MAPPING, impact, index, sub, "pdo_mapping", before, after, note)
+
+
 def _limits(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     for low, field, kind in ((True, "low_limit", Kind.LOW_LIMIT), (False, "high_limit", Kind.HIGH_LIMIT)):
         before, after = getattr(old.var, field), getattr(new.var, field)
-        if same_value(before, after):
+        if same_value(before, after) or written.same_as_written(before, after):
             continue
         dtype = sides.new.entry_type(new.var, new.owner)
         impact, note = limit_impact(before, after, low, dtype, sides.new_node, new.var.access or old.var.access)
@@ -398,7 +483,11 @@ def _value_change(
 def _values(sides: Sides, old: Entry, new: Entry) -> Iterator[Change]:
     for field, kind in (("default", Kind.DEFAULT), ("parameter_value", Kind.PARAMETER_VALUE)):
         before, after = getattr(old.var, field), getattr(new.var, field)
-        if same_value(before, after) or (field == "parameter_value" and _same_configured(old.var, new.var, sides)):
+        if (
+            same_value(before, after)
+            or written.same_as_written(before, after)
+            or (field == "parameter_value" and _same_configured(old.var, new.var, sides))
+        ):
             continue
         dtype = sides.new.entry_type(new.var, new.owner) or sides.old.entry_type(old.var, old.owner)
         if _same_when_resolved(before, after, sides):

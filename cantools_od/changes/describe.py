@@ -166,10 +166,12 @@ def label(field: str) -> str:
     if field in _LABELS:
         return _LABELS[field]
     head, _, tail = field.rpartition(".")
+    if head.endswith("spelling"):
+        return "section name as written" if tail == "section" else f"key {tail} as written"
     if head.endswith("extra") or head.startswith("["):
         return f"{head.removesuffix('extra').rstrip('.')} key {tail}".strip()
     if head == "device_info.baud_rates":
-        return f"{tail} kbit/s"
+        return f"supported bit rate {tail} kbit/s"
     if head == "dummy_usage":
         return f"dummy usage of type 0x{tail}"
     return tail.replace("_", " ") if tail else field.replace("_", " ")
@@ -188,7 +190,7 @@ def sentence(change: Change) -> str:
         text = f"removed: {change.old_text}"
     elif kind == "not-comparable":
         text = f"{label(change.field)}: not comparable"
-    elif kind == "object-moved":
+    elif kind in ("object-moved", "sub-moved"):
         text = f"moved from {change.old_text} to {change.new_text}"
     else:
         what = label(change.field)

@@ -106,7 +106,8 @@ def _baud_rates(old: Device, new: Device) -> Iterator[Change]:
     for rate in sorted(set(before) | set(after)):
         was, now = bool(before.get(rate)), bool(after.get(rate))
         if was != now:
-            impact, note = flag_impact(was, now, f"running at {rate} kbit/s")
+            # A supported rate (CiA 306 BaudRate_<kbit/s>), not the rate the device runs at.
+            impact, note = flag_impact(was, now, f"able to run at {rate} kbit/s")
             yield _field_change(Kind.BAUD_RATE, impact, f"device_info.baud_rates.{rate}", was, now, note)
 
 

@@ -79,6 +79,34 @@ def flag_impact(old: bool | None, new: bool | None, what: str) -> tuple[Impact, 
     return Impact.COSMETIC, "unset reads as no"
 
 
+# The PDOs an XDD's PDOmapping word lets an entry be mapped into (CiA 311).
+_PDO_DIRECTIONS = {"no": frozenset(), "TPDO": frozenset({"TPDO"}), "RPDO": frozenset({"RPDO"})}
+_BOTH_DIRECTIONS = frozenset({"TPDO", "RPDO"})  # optional, default
+
+
+def _directions(word: str, access: AccessType | None) -> frozenset[str]:
+    """The PDOs the entry can be mapped into: what the word allows and the access permits (a TPDO reads the
+    entry, an RPDO writes it)."""
+    allowed = _PDO_DIRECTIONS.get(word, _BOTH_DIRECTIONS)
+    if access is None:
+        return allowed
+    abilities = _CAPABILITIES[access]
+    return allowed & frozenset(d for d, need in (("TPDO", "read"), ("RPDO", "write")) if need in abilities)
+
+
+def pdo_direction_impact(
+    old: str, new: str, old_access: AccessType | None, new_access: AccessType | None
+) -> tuple[Impact, str]:
+    """A PDO direction taken away breaks a master that maps the entry there; one given is compatible."""
+    before, after = _directions(old, old_access), _directions(new, new_access)
+    lost, gained = before - after, after - before
+    if lost:
+        return Impact.BREAKING, "no longer mappable into " + " or ".join(sorted(f"a {d}" for d in lost))
+    if gained:
+        return Impact.COMPATIBLE, "now mappable into " + " and ".join(sorted(f"a {d}" for d in gained))
+    return Impact.COSMETIC, "the same PDOs, as its access allows"
+
+
 def count_impact(old: int | None, new: int | None, what: str) -> tuple[Impact, str]:
     """A number of supported things (PDOs, channels): fewer is breaking, more compatible."""
     if old is not None and new is not None:
@@ -165,7 +193,11 @@ def canopennode_impact(field: str, old: object, new: object) -> tuple[Impact, st
     """CANopenNode properties: the storage group and count label decide generated code; a disabled object is
     left out of the generated OD (and so gone from the bus)."""
     if field == "disabled":
-        return flag_impact(not old, not new, "in the generated CANopenNode OD (CO_disabled)")
+        if bool(old) == bool(new):
+            return Impact.COSMETIC, "unset reads as enabled"
+        if new:
+            return Impact.BREAKING, "disabled (CO_disabled): the OD loses it, and the bus with it"
+        return Impact.COMPATIBLE, "enabled (CO_disabled no longer set): the OD gains it"
     if field in ("storage_group", "count_label") and old is not None and new is not None:
         what = "storage group" if field == "storage_group" else "OD_CNT_ count"
         return Impact.BREAKING, f"generated code and the stored layout change ({what})"

@@ -127,7 +127,7 @@ def _entry(change: Change) -> str:
     return f"{where} {_escape(change.name)}: "
 
 
-_VERBS = {Kind.NAME: "renamed", Kind.OBJECT_MOVED: "moved"}
+_VERBS = {Kind.NAME: "renamed", Kind.OBJECT_MOVED: "moved", Kind.SUB_MOVED: "moved"}
 
 
 def _sentence(change: Change) -> str:
@@ -139,9 +139,7 @@ def _sentence(change: Change) -> str:
     elif change.kind is Kind.PDO_LAYOUT:
         text = f"mapping: {_escape(change.note)} (table below)"
     else:
-        what = {Kind.NAME: "renamed", Kind.OBJECT_MOVED: "moved"}.get(change.kind) or _escape(
-            describe.label(change.field)
-        )
+        what = _VERBS.get(change.kind) or _escape(describe.label(change.field))
         if change.kind is Kind.NODEID_FORM:
             what += " ($NODEID form)"
         before, after = change.old_text, change.new_text

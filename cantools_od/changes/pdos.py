@@ -10,6 +10,7 @@ from ..views.pdo import Pdo, PdoEntry, pdo_map
 from . import describe
 from .compare import Sides
 from .records import Change, Impact, Kind, PdoDiff, PdoEntryView, PdoView, new_change
+from .traffic import EVENT_TIMER_SUB, INHIBIT_SUB, timing_effect, transmission_effect
 
 COB_ID_SUB, TRANSMISSION_SUB = 1, 2
 # The timing entries of a PDO communication record (CiA 301 §7.5.2.35/36), with their unit.
@@ -19,8 +20,8 @@ VALUE_KINDS = (Kind.DEFAULT, Kind.PARAMETER_VALUE, Kind.NODEID_FORM)
 
 def pdo_diffs(sides: Sides) -> list[PdoDiff]:
     """The PDOs that were added, removed or changed, RPDOs first."""
-    old = {(p.direction, p.number): p for p in pdo_map(sides.old, sides.old_node, sides.old_ids)}
-    new = {(p.direction, p.number): p for p in pdo_map(sides.new, sides.new_node, sides.new_ids)}
+    old = {(p.direction, p.number): p for p in _in_device(sides.old, pdo_map(sides.old, sides.old_node, sides.old_ids))}
+    new = {(p.direction, p.number): p for p in _in_device(sides.new, pdo_map(sides.new, sides.new_node, sides.new_ids))}
     diffs = []
     for key in sorted(set(old) | set(new), key=lambda k: (k[0] != "rx", k[1])):
         before, after = old.get(key), new.get(key)
@@ -47,6 +48,17 @@ def pdo_diffs(sides: Sides) -> list[PdoDiff]:
     return diffs
 
 
+def _in_device(device: Device, pdos: list[Pdo]) -> list[Pdo]:
+    """The PDOs the device has: not those whose communication or mapping object is CO_disabled (left out of the
+    OD CANopenNode generates)."""
+
+    def disabled(index: int) -> bool:
+        obj = device.objects.get(index)
+        return obj is not None and obj.canopennode is not None and bool(obj.canopennode.disabled)
+
+    return [pdo for pdo in pdos if not (disabled(pdo.comm_index) or disabled(pdo.map_index))]
+
+
 def _layout(pdo: Pdo) -> tuple[tuple[int, int, int, int], ...]:
     return tuple((e.index, e.subindex, e.bit_offset, e.bit_length) for e in pdo.entries)
 
@@ -68,10 +80,12 @@ def _changes(before: Pdo | None, after: Pdo | None, node_id: int | None) -> list
     if cob is not None:
         changes.append(cob)
     if before.transmission_type != after.transmission_type:
+        impact, note = transmission_effect(after.direction, before.transmission_type, after.transmission_type)
         changes.append(
             new_change(
                 kind=Kind.PDO_TRANSMISSION_TYPE,
-                impact=Impact.VALUE,
+                impact=impact,
+                note=note,
                 index=before.comm_index,
                 subindex=TRANSMISSION_SUB,
                 field="transmission_type",
@@ -122,11 +136,14 @@ def timing_text(sub: int, value: int | None) -> str:
 
 def _timing(sides: Sides, before: Pdo, after: Pdo) -> Iterator[Change]:
     old, new = timing(sides.old, before, sides.old_node), timing(sides.new, after, sides.new_node)
+    swapped = _swapped(old, new)
     for sub, (label, _, _) in TIMING_SUBS.items():
         if sub in old and sub in new and old[sub] != new[sub]:  # an entry on one side only is a sub-object change
+            impact, note = timing_effect(after.direction, after.transmission_type, sub, old[sub], new[sub])
             yield new_change(
                 kind=Kind.PDO_TIMING,
-                impact=Impact.VALUE,
+                impact=impact,
+                note=f"{note}; inhibit time and event timer swapped" if swapped and sub in _SWAPPABLE else note,
                 index=before.comm_index,
                 subindex=sub,
                 field=label.replace(" ", "_"),
@@ -135,6 +152,19 @@ def _timing(sides: Sides, before: Pdo, after: Pdo) -> Iterator[Change]:
                 old_text=timing_text(sub, old.get(sub)),
                 new_text=timing_text(sub, new.get(sub)),
             )
+
+
+_SWAPPABLE = (INHIBIT_SUB, EVENT_TIMER_SUB)
+
+
+def _swapped(old: dict[int, int], new: dict[int, int]) -> bool:
+    """The inhibit time and the event timer traded values (an edit in the wrong column)."""
+    if not all(sub in old and sub in new for sub in _SWAPPABLE):
+        return False
+    return old[INHIBIT_SUB] != old[EVENT_TIMER_SUB] and (old[INHIBIT_SUB], old[EVENT_TIMER_SUB]) == (
+        new[EVENT_TIMER_SUB],
+        new[INHIBIT_SUB],
+    )
 
 
 def entry_text(entry: PdoEntry | PdoEntryView) -> str:

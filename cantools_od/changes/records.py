@@ -49,6 +49,7 @@ class Kind(StrEnum):
     OBJECT_REMOVED = "object-removed"
     OBJECT_MOVED = "object-moved"
     SUB_ADDED = "sub-added"
+    SUB_MOVED = "sub-moved"
     SUB_REMOVED = "sub-removed"
     NAME = "name"
     IDENTIFIER = "identifier"
@@ -81,6 +82,7 @@ class Kind(StrEnum):
     PDO_TRANSMISSION_TYPE = "pdo-transmission-type"
     PDO_TIMING = "pdo-timing"
     NOT_COMPARABLE = "not-comparable"
+    PEER_READING = "peer-reading"
     PDO_LAYOUT = "pdo-layout"
 
 
@@ -91,6 +93,7 @@ _WHO: dict[Kind, frozenset[Breaks]] = {
     Kind.SUB_REMOVED: _BOTH,
     Kind.OBJECT_TYPE: _BOTH,  # the generated structure changes, and the sub-indices a master addresses
     Kind.OBJECT_MOVED: _BOTH,  # a master addresses the old index; CANopenNode's OD_ENTRY_H<index> names change
+    Kind.SUB_MOVED: _BOTH,  # a master and compiled code address the old sub-index: another quantity, or none
     Kind.DATA_TYPE: _BOTH,  # the C type changes, and the number of bytes on the bus
     Kind.NAME: frozenset({Breaks.CODE}),  # a rename reaches generated identifiers only
     Kind.IDENTIFIER: frozenset({Breaks.CODE}),

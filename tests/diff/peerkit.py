@@ -44,6 +44,7 @@ def read(path: Path) -> Reading | None:
         reading[None, None, attribute] = getattr(info, attribute)
     reading[None, None, "allowed_baudrates"] = frozenset(info.allowed_baudrates)
     reading[None, None, "node_id"] = od.node_id
+    reading[None, None, "bitrate"] = od.bitrate
     return reading
 
 

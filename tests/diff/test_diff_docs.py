@@ -29,11 +29,21 @@ def _apply(source: str, section: str, edits: str) -> str:
     return source
 
 
+def _swap_sections(source: str, first: str, second: str) -> str:
+    """The two sections under each other's name: the entries trade places."""
+    marker = "\0"
+    source = source.replace(f"[{first}]\n", f"[{marker}]\n").replace(f"[{second}]\n", f"[{first}]\n")
+    return source.replace(f"[{marker}]\n", f"[{second}]\n")
+
+
 @pytest.mark.parametrize(("section", "example", "tag"), rules())
 def test_each_rule_of_the_docs(section: str, example: str, tag: str) -> None:
     old = BASE
+    swapped = re.fullmatch(r"swapped with \[(\w+)\]", example)
     if example == "removed":
         new = drop_section(BASE, section)
+    elif swapped:
+        new = _swap_sections(BASE, section, swapped[1])
     else:
         given, _, edits = (
             example.removeprefix("with ").rpartition(": ") if example.startswith("with ") else ("", "", example)

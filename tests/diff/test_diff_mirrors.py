@@ -37,13 +37,18 @@ def test_demo_device_revisions_render_both_ways(old: str, new: str) -> None:
 
 def test_demo_device_rewritten_by_canopeneditor() -> None:
     """355a573 → ae81d72: the product code of 1018h set, the SDO client disabled, and sub-index 0 of six objects
-    no longer PDO-mappable (which a master that maps them sees); vendor-ID and product code now stated."""
+    no longer PDO-mappable (which a master that maps them sees); vendor-ID and product code now stated; read-only
+    entries say TPDO where they said optional."""
     result = _diff(DEMO, DEMO_XDD, "355a573", "ae81d72")
     found = {(c.kind.value, text.tag(c), c.index, c.subindex, c.field) for c in result.changes()}
     unmappable = {
         ("pdo-mapping", "wire", index, 0, "pdo_mapping") for index in (0x2110, 0x2111, 0x2112, 0x6200, 0x6401, 0x6411)
     }
-    assert found == unmappable | {
+    # PDOmapping "optional" → "TPDO" on read-only entries: the word changes, the PDOs it can be mapped into do not.
+    restated = {("pdo-mapping", "cosmetic", 0x1001, None, "pdo_mapping")} | {
+        ("pdo-mapping", "cosmetic", 0x6401, sub, "pdo_mapping") for sub in range(1, 17)
+    }
+    assert found == unmappable | restated | {
         ("device-info", "cosmetic", None, None, "device_info.vendor_name"),
         ("identity", "compatible", None, None, "device_info.vendor_number"),  # stated now: nothing to break
         ("identity", "compatible", None, None, "device_info.product_number"),

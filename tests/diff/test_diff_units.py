@@ -18,11 +18,16 @@ def test_the_same_file_has_no_changes() -> None:
 
 
 def test_spelling_only_is_no_change() -> None:
-    """Radix, key case, blanks around `=` and section order change nothing."""
+    """Radix, the case of a key no peer looks up by case, of an access type, blanks around `=` and section order
+    change nothing; the case of a key python-canopen looks up is what it reads differently."""
     text = set_key(BASE, "1017", "DefaultValue", "0x3E8")  # 1000 in hex
-    text = text.replace("ParameterName=Producer heartbeat time", "parametername=Producer heartbeat time")
-    text = text.replace("AccessType=rw\nDefaultValue=0x3E8", "ACCESSTYPE = RW\nDefaultValue=0x3E8")
+    text = text.replace("SubNumber=5", "SUBNUMBER=5")
+    text = text.replace("AccessType=rw\nDefaultValue=0x3E8", "AccessType = RW\nDefaultValue=0x3E8")
     assert diff_of(text).empty
+    respelled = text.replace("ParameterName=Producer heartbeat time", "parametername=Producer heartbeat time")
+    assert [(c.kind, c.index, c.field) for c in diff_of(respelled).changes()] == [
+        (Kind.PEER_READING, 0x1017, "spelling.ParameterName")
+    ]
     reordered = drop_section(BASE, "1017") + "\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\n"
     reordered += "DataType=0x0006\nAccessType=rw\nDefaultValue=1000\nPDOMapping=0\n"
     assert diff_of(reordered).empty
@@ -215,7 +220,8 @@ def test_pdo_cob_id_and_transmission_type() -> None:
     text = set_key(text, "1800sub2", "DefaultValue", "1")
     (pdo,) = diff_of(text).pdos
     kinds = {(c.kind, c.impact) for c in pdo.changes}
-    assert kinds == {(Kind.PDO_COB_ID, Impact.BREAKING), (Kind.PDO_TRANSMISSION_TYPE, Impact.VALUE)}
+    # 255 → 1: sent on every SYNC instead of on change, which a master without SYNC never receives
+    assert kinds == {(Kind.PDO_COB_ID, Impact.BREAKING), (Kind.PDO_TRANSMISSION_TYPE, Impact.BREAKING)}
 
 
 def test_pdo_removed_is_breaking() -> None:
@@ -328,10 +334,18 @@ def test_pdo_timing_is_with_the_pdo() -> None:
     result = diff_of(set_key(set_key(BASE, "1800sub5", "DefaultValue", "500"), "1800sub3", "DefaultValue", "50"))
     assert not result.objects  # shown with the PDO, not again under 0x1800
     (pdo,) = result.pdos
-    shown = {(c.kind, c.index, c.subindex, c.old_text, c.new_text, c.impact) for c in pdo.changes}
-    assert shown == {
-        (Kind.PDO_TIMING, 0x1800, 3, "100 (10 ms)", "50 (5 ms)", Impact.VALUE),
-        (Kind.PDO_TIMING, 0x1800, 5, "1000 ms", "500 ms", Impact.VALUE),
+    shown = {(c.kind, c.index, c.subindex, c.old_text, c.new_text, c.impact, c.note) for c in pdo.changes}
+    assert shown == {  # TPDO1 is event-driven: both change its traffic
+        (
+            Kind.PDO_TIMING,
+            0x1800,
+            3,
+            "100 (10 ms)",
+            "50 (5 ms)",
+            Impact.BREAKING,
+            "now at most every 5 ms instead of every 10 ms",
+        ),
+        (Kind.PDO_TIMING, 0x1800, 5, "1000 ms", "500 ms", Impact.BREAKING, "now every 500 ms instead of every 1000 ms"),
     }
     assert pdo.after is not None and pdo.after.timing == {3: 50, 5: 500}
 

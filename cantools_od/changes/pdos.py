@@ -5,7 +5,14 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from ..model import Device, NodeIdExpr
-from ..model.cia301.pdo import is_dummy_index
+from ..model.cia301.pdo import (
+    EVENT_TIMER_SUB,
+    INHIBIT_SUB,
+    INHIBIT_UNIT_US,
+    SYNC_START_SUB,
+    is_dummy_index,
+    transmission_meaning,
+)
 from ..views.pdo import Pdo, PdoEntry, pdo_map
 from . import describe
 from .compare import Sides
@@ -14,7 +21,11 @@ from .traffic import EVENT_TIMER_SUB, INHIBIT_SUB, timing_effect, transmission_e
 
 COB_ID_SUB, TRANSMISSION_SUB = 1, 2
 # The timing entries of a PDO communication record (CiA 301 §7.5.2.35/36), with their unit.
-TIMING_SUBS = {3: ("inhibit time", 100, "µs"), 5: ("event timer", 1, "ms"), 6: ("SYNC start value", 0, "")}
+TIMING_SUBS = {
+    INHIBIT_SUB: ("inhibit time", INHIBIT_UNIT_US, "µs"),
+    EVENT_TIMER_SUB: ("event timer", 1, "ms"),
+    SYNC_START_SUB: ("SYNC start value", 0, ""),
+}
 VALUE_KINDS = (Kind.DEFAULT, Kind.PARAMETER_VALUE, Kind.NODEID_FORM)
 
 
@@ -275,19 +286,7 @@ def _cob_id(before: Pdo, after: Pdo, node_id: int | None) -> Change | None:
 
 def transmission_text(value: int | None) -> str:
     """A transmission type with what it means (CiA 301 §7.5.2.35)."""
-    if value is None:
-        return "-"
-    if value == 0:
-        meaning = "synchronous, acyclic"
-    elif value <= 240:
-        meaning = "synchronous, every SYNC" if value == 1 else f"synchronous, every {value}th SYNC"
-    elif value in (252, 253):
-        meaning = "RTR only"
-    elif value >= 254:
-        meaning = "event-driven"
-    else:
-        meaning = "reserved"
-    return f"{value} ({meaning})"
+    return "-" if value is None else f"{value} ({transmission_meaning(value)})"
 
 
 def layout_text(pdo: Pdo) -> str:

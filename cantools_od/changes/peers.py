@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from ..eds.preserve import canonical_section_name
-from ..lint.syntax import _python_canopen_reads as python_canopen_reads
+from ..eds.peer_names import python_canopen_reads
 from ..model import Device, Section
 from . import describe
 from .records import Change, Impact, Kind, new_change

@@ -10,6 +10,7 @@ from ..model.cia301.pdo import (
     INHIBIT_SUB,
     INHIBIT_UNIT_US,
     SYNC_START_SUB,
+    TRANSMISSION_SUB,
     is_dummy_index,
     transmission_meaning,
 )
@@ -17,9 +18,9 @@ from ..views.pdo import Pdo, PdoEntry, pdo_map
 from . import describe
 from .compare import Sides
 from .records import Change, Impact, Kind, PdoDiff, PdoEntryView, PdoView, new_change
-from .traffic import EVENT_TIMER_SUB, INHIBIT_SUB, timing_effect, transmission_effect
+from .traffic import timing_effect, transmission_effect
 
-COB_ID_SUB, TRANSMISSION_SUB = 1, 2
+COB_ID_SUB = 1
 # The timing entries of a PDO communication record (CiA 301 §7.5.2.35/36), with their unit.
 TIMING_SUBS = {
     INHIBIT_SUB: ("inhibit time", INHIBIT_UNIT_US, "µs"),

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from ..eds.preserve import canonical_section_name
 from ..eds.peer_names import python_canopen_reads
+from ..eds.preserve import canonical_section_name
 from ..model import Device, Section
 from . import describe
 from .records import Change, Impact, Kind, new_change

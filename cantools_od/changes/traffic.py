@@ -7,12 +7,12 @@ Each is `wire` with what changes on the bus, unless the traffic stays the same.
 
 from __future__ import annotations
 
+from ..model.cia301.pdo import EVENT_TIMER_SUB, INHIBIT_SUB
 from .records import Impact
 
 SYNC_CYCLIC_LAST = 240
 RTR_SYNC, RTR_EVENT = 252, 253
 EVENT_TYPES = (254, 255)
-INHIBIT_SUB, EVENT_TIMER_SUB, SYNC_START_SUB = 3, 5, 6
 
 
 def _ordinal(number: int) -> str:

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 import click
 
 from ..model import Device, Diagnostic, Severity
+from ..model.device import errors_to_fix as errors_to_fix  # the rule lives with the model; commands import it here
 from ..model.source import capped
 
 if TYPE_CHECKING:
@@ -114,15 +115,6 @@ def force_option(function: click.decorators.FC) -> click.decorators.FC:
         is_flag=True,
         help="Replace files in the output folder that cantools-od did not generate (no generated-file banner).",
     )(function)
-
-
-def errors_to_fix(device: Device) -> str | None:
-    """`N errors to fix first` when reading found errors: a command that would carry the content
-    on (fmt, convert, ids, the editor's formatting) then does nothing rather than lose or spread what it
-    could not read. The errors of lint's rules do not count: what such a file says is carried on as it is
-    (the input's error is lint's to report, and fmt changes nothing peers read)."""
-    count = sum(d.severity is Severity.ERROR for d in device.diagnostics)
-    return f"{count} error{'s' if count != 1 else ''} to fix first" if count else None
 
 
 def report(diagnostics: Iterable[Diagnostic], minimum: Severity = Severity.WARNING) -> bool:

@@ -15,11 +15,11 @@ from typing import NoReturn
 
 import click
 
-from ..model import Device, Severity
+from ..model import Device
 from .batch import jobs_option
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, node_id_option, read_device
+from .diff_parts import NULL_DEVICE, found_in, missing_side, read_pins, reading_note, refusal, render
 
-NULL_DEVICE = "/dev/null"  # git's name for the missing side of an added or deleted file
 DEVICE_SUFFIXES = (".eds", ".dcf", ".json", ".xdd", ".xdc", ".xpd")
 
 
@@ -125,18 +125,6 @@ def _folders(
     run(args[0], args[1], Options(fmt, fail_on, node_id), jobs, color)
 
 
-def found_in(result: object, fail_on: str) -> bool:
-    """Whether a change at or above `--fail-on` is in the result."""
-    from ..changes import Breaks, DeviceDiff
-
-    assert isinstance(result, DeviceDiff)
-    if fail_on in ("wire", "code"):
-        return result.hurts(Breaks(fail_on))
-    if fail_on == "breaking":
-        return result.breaking
-    return fail_on == "any" and not result.empty
-
-
 def _text_diff(args: tuple[str, ...]) -> None:
     """A unified diff of a file that is no device description, as git would show it."""
     import difflib
@@ -152,47 +140,12 @@ def _text_diff(args: tuple[str, ...]) -> None:
     sys.stdout.writelines(line if line.endswith("\n") else line + "\n" for line in lines)
 
 
-def render(result: object, fmt: str, names: tuple[str, str] | None = None) -> str:
-    """The report in a format; `names`: the sides as a Markdown title shows them (default: the files' names)."""
-    from ..changes import DeviceDiff, jsonout, markdown, text
-
-    assert isinstance(result, DeviceDiff)
-    if fmt == "json":
-        return jsonout.render(result)
-    if fmt == "markdown":
-        return markdown.render(result, names)
-    return text.render(result)
-
-
 class Side:
     """One side of the comparison: the device and the pins found beside it (None: none)."""
 
     def __init__(self, device: Device, pins: Mapping[str, str] | None) -> None:
         self.device = device
         self.pins = pins
-
-
-def reading_note(device: Device, name: str) -> str:
-    """The note that reading found errors (their values are compared as written); "" when it found none."""
-    errors = sum(1 for d in device.diagnostics if d.severity is Severity.ERROR)
-    if not errors:
-        return ""
-    return (
-        f"{name}: note: {errors} error{'s' if errors != 1 else ''} while reading; unreadable values are "
-        f"compared as written (see `cantools-od lint {name}`)"
-    )
-
-
-def refusal(device: Device, name: str) -> str:
-    """Why no side can be made of the device, "" when one can: the reader refused the file (XML that is not
-    well-formed, hostile or not CiA 311), so no model of it exists and every object would show as removed."""
-    from ..xdd import refusal as reader_refusal
-
-    found = reader_refusal(device)
-    if found is None:
-        return ""
-    line, column = found.location.shown  # named as the user named the file: under --git it is a temporary copy
-    return f"{name}:{line}:{column}: error: {found.message} [{found.code}]; nothing compared"
 
 
 def _note_errors(device: Device, name: str) -> None:
@@ -215,24 +168,8 @@ def _pins_file(path: Path | None) -> Mapping[str, str] | None:
         _fail(str(error))
 
 
-def read_pins(path: Path) -> Mapping[str, str]:
-    """A pin file's identifiers; ValueError with the one-line reason when it cannot be read or is none."""
-    from ..identifiers import load_pins
-
-    try:
-        return load_pins(path)
-    except OSError as error:
-        raise ValueError(f"{path}: cannot read: {error.strerror or error}") from None
-
-
 def _explicit_pins(path: str | None) -> Mapping[str, str] | None:
     return _pins_file(Path(path)) if path is not None else None
-
-
-def missing_side() -> Device:
-    """The side of an added or deleted file: an empty device named /dev/null. Made without validation, which would
-    build the device's schema first: a cost at every start of the command."""
-    return Device.model_construct(source=NULL_DEVICE)
 
 
 def _file_side(path: str, node_id: int | None, explicit_pins: str | None) -> Side:

@@ -18,7 +18,7 @@ import click
 from ..model import Device
 from .batch import file_size, run_each
 from .common import EXIT_FINDINGS, EXIT_OK, EXIT_USAGE, Progress, device_or_reason
-from .diff import NULL_DEVICE, found_in, missing_side, read_pins, reading_note, refusal, render
+from .diff_parts import NULL_DEVICE, found_in, missing_side, read_pins, reading_note, refusal, render
 
 # Device descriptions by file name; a JSON model is compared only when named (a folder holds other JSON files).
 FOLDER_SUFFIXES = (".eds", ".dcf", ".xdd", ".xdc", ".xpd")

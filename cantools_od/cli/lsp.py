@@ -14,7 +14,7 @@ def command(stdio: bool) -> None:
     """Serve the Language Server Protocol for EDS, DCF and XDD/XDC files: diagnostics as `lint`
     reports them, hover, go to definition, references, fixes, formatting as `fmt`, outline and
     completion. An editor starts it; see README, "Editors"."""
-    from ..lsp.server import serve
+    from ..lsp.app import serve
 
     interrupted: list[int] = []
 

@@ -11,7 +11,7 @@ from ..model.wire import decoded
 
 if TYPE_CHECKING:
     from ..model import Device
-    from .probe import Reading
+    from .judge import Reading
 
 
 def actual_device(device: Device, node_id: int, readings: list[Reading]) -> Device:

@@ -3,6 +3,7 @@ the entry's lines in the file."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from ..lint.codes import load
@@ -21,7 +22,16 @@ from ..model.cia301.objects import (
 if TYPE_CHECKING:
     import canopen
 
-    from .probe import Reading
+
+@dataclass
+class Reading:
+    """One entry as the device answered: its bytes, or the abort code (TIMEOUT when it did not answer)."""
+
+    index: int
+    subindex: int
+    data: bytes | None = None
+    abort: int | None = None
+
 
 # Values the device changes by itself: its error state, not a configuration.
 STATUS = {ERROR_REGISTER, MANUFACTURER_STATUS, ERROR_HISTORY}

@@ -12,14 +12,26 @@ from __future__ import annotations
 import threading
 import time
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from ..model.cia301.cobid import BASE_11BIT, BASE_29BIT, EXTENDED, SYNC_ID, VALID
 from ..model.cia301.objects import COB_ID_SYNC, COMM_BASE, MAP_BASE, PDO_SPAN, RX, TX
 from ..model.cia301.pdo import decode_entry, is_dummy_index
 
 if TYPE_CHECKING:
-    from .simulator import Simulator
+    import threading
+
+    import canopen
+
+
+class Host(Protocol):
+    """What the PDOs need of the node that runs them (the simulator): its lock, its python-canopen node and the
+    network it is on."""
+
+    lock: threading.RLock
+    node: canopen.LocalNode
+    network: canopen.Network
+
 
 SYNC_TYPES = range(0, 241)  # 0: acyclic synchronous; 1-240: every n-th SYNC
 EVENT_TYPES = (0xFE, 0xFF)
@@ -47,7 +59,7 @@ class Pdo:
 
 @dataclass
 class PdoRunner:
-    node: Simulator
+    node: Host
     tpdos: list[Pdo] = field(default_factory=list)
     rpdos: dict[int, Pdo] = field(default_factory=dict)
     sync_id: int | None = None

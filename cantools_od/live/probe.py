@@ -30,7 +30,7 @@ from ..model.cia301.objects import (
     TX,
 )
 from ..model.datatypes import DOMAIN
-from .judge import Judge
+from .judge import Judge, Reading
 
 if TYPE_CHECKING:
     import canopen
@@ -64,16 +64,6 @@ class ProbeOptions:
     timeout: float = 0.5  # seconds one SDO request waits for its response
     wait: float = 0.0  # seconds to wait for the node to answer its first SDO
     check_writes: bool = False
-
-
-@dataclass
-class Reading:
-    """One entry as the device answered: its bytes, or the abort code (TIMEOUT when it did not answer)."""
-
-    index: int
-    subindex: int
-    data: bytes | None = None
-    abort: int | None = None
 
 
 @dataclass

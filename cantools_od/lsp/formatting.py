@@ -17,10 +17,10 @@ from pathlib import Path
 from lsprotocol import types
 
 from ..api import dumps, format_for
-from ..cli.common import errors_to_fix
 from ..eds.decode import decode_as, mixed_encoding
 from ..lint.config import load_int_style
 from ..model import Device
+from ..model.device import errors_to_fix
 from ..sniff import NotADeviceDescription
 from .document import Analysis, Encoding, path_of, read
 from .edits import one_edit

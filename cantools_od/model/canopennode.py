@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 from enum import StrEnum
-from typing import TYPE_CHECKING, NamedTuple
+from typing import Any, NamedTuple, Protocol
 
 from pydantic import BaseModel, ConfigDict
 
@@ -53,9 +53,37 @@ from .cia301.objects import (
 )
 from .datatypes import DOMAIN, DataType, ValueKind
 
-if TYPE_CHECKING:
-    from .device import Device
-    from .objects import Object, Variable
+
+# What the profile's functions read of an entry, an object and a device: the model's classes have it, and this module,
+# which model/objects.py imports for CanopenNodeInfo, need not import them back.
+class Mappable(Protocol):
+    @property
+    def access(self) -> StrEnum | None: ...
+
+    @property
+    def stated_pdo_mapping(self) -> str | None: ...
+
+    @property
+    def pdo_mapping(self) -> bool | None: ...
+
+    def pdo_mapping_kind(self) -> str | None: ...
+
+
+class Typed(Protocol):
+    @property
+    def data_type(self) -> int | None: ...
+
+
+class Owner(Typed, Protocol):
+    @property
+    def kind(self) -> int: ...
+
+    @property
+    def dtype(self) -> DataType | None: ...
+
+
+class Types(Protocol):
+    def entry_type(self, var: Any, obj: Any) -> DataType | None: ...
 
 
 class SrdoAccess(StrEnum):
@@ -299,7 +327,7 @@ def editor_pdo_word(stated: str | None, mappable: bool | None) -> str:
     return stated if stated is not None else ("optional" if mappable else "no")
 
 
-def pdo_bits_pair(var: Variable) -> tuple[str, str]:
+def pdo_bits_pair(var: Mappable) -> tuple[str, str]:
     """An entry's ODA_*PDO directions, ours and CANopenEditor's.
 
     They differ only on an EDS's PDOMapping=1 on a ro/const or wo entry: CANopenEditor reads it as
@@ -354,7 +382,7 @@ def editor_reads(dtype: DataType, text: str) -> bool:
     return dtype.kind is ValueKind.REAL and editor_real(text) is not None
 
 
-def editor_entry_type(device: Device, var: Variable, obj: Object) -> DataType | None:
+def editor_entry_type(device: Types, var: Typed, obj: Owner) -> DataType | None:
     """The entry's type as CANopenEditor takes it: its own, else, for an ARRAY element whose DataType is 0 or
     missing, the ARRAY's (old CANopenEditor projects write `dataType="0000"` on the elements)."""
     dtype = device.entry_type(var, obj)

@@ -11,7 +11,7 @@ from pydantic import BaseModel, ConfigDict, Field, PrivateAttr
 from .cia301.objects import DATA_TYPE_AREA
 from .datatypes import DOMAIN, DataType, standard_type
 from .objects import Object, ObjectKind, Section, Variable
-from .source import Diagnostic
+from .source import Diagnostic, Severity
 from .values import NodeIdExpr, Value
 
 
@@ -221,3 +221,12 @@ def _strip_origins(data: object) -> object:
     if isinstance(data, list):
         return [_strip_origins(item) for item in data]
     return data
+
+
+def errors_to_fix(device: Device) -> str | None:
+    """`N errors to fix first` when reading found errors: a command that would carry the content
+    on (fmt, convert, ids, the editor's formatting) then does nothing rather than lose or spread what it
+    could not read. The errors of lint's rules do not count: what such a file says is carried on as it is
+    (the input's error is lint's to report, and fmt changes nothing peers read)."""
+    count = sum(d.severity is Severity.ERROR for d in device.diagnostics)
+    return f"{count} error{'s' if count != 1 else ''} to fix first" if count else None

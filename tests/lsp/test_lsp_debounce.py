@@ -7,8 +7,9 @@ import asyncio
 
 import pytest
 
+from cantools_od.lsp.app import build
 from cantools_od.lsp.document import Encoding
-from cantools_od.lsp.server import DEBOUNCE, Open, build
+from cantools_od.lsp.server import DEBOUNCE, Open
 
 
 @pytest.mark.asyncio

@@ -145,8 +145,8 @@ A `const` entry holds its DefaultValue for ever: no SDO writes it, and the devic
 value whatever the DCF says. A ParameterValue that differs is not what the device holds: a tool
 that configures from the DCF fails on the write (abort 0601 0002h), and one that reads the DCF
 as the device's state reads a value the device never has.""",
-    ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=8\n",
-    fixed=ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=7\n",
+    lambda: ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=8\n",
+    fixed=lambda: ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=7\n",
 )
 def const_parameter_value(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):

@@ -27,14 +27,13 @@ from cantools_od.eds.decode import decode_as
 from cantools_od.lint import LintOptions
 from cantools_od.lsp.document import Analysis, Encoding, analyse
 from cantools_od.lsp.edits import apply
-from cantools_od.lsp.formatting import NotFormatted, format_edits
+from cantools_od.lsp.formatting import NotFormatted, blocks, format_edits
 
 from support import CORPUS, cli_command, corpus_file
 
 EXAMPLES = 160
 """Random ranges drawn (over 2 x 107 documents); about a minute with the one `fmt` run."""
 _HEADER = re.compile(r"[ \t]*\[")
-_COMMENT = re.compile(r"[ \t]*;")
 
 
 @dataclass
@@ -89,19 +88,11 @@ def _fmt(case: Case, text: str) -> str:
 
 
 def _sections_around(lines: list[str], first: int, last: int) -> tuple[int, int]:
-    """The lines (first, past the last) from the header above `first` (and the comments right above that
-    header) to the header after `last` (and the comments right above it)."""
-    start = first
-    while start > 0 and not _HEADER.match(lines[start]):
-        start -= 1
-    while start > 0 and _COMMENT.match(lines[start - 1]):
-        start -= 1
-    stop = last + 1
-    while stop < len(lines) and not _HEADER.match(lines[stop]):
-        stop += 1
-    while stop > last + 1 and _COMMENT.match(lines[stop - 1]):
-        stop -= 1
-    return start, stop
+    """The lines (first, past the last) of the sections `first`..`last` touch. A section is its header, what follows
+    it up to the next section, and the comment lines right above its header, as the server reads sections: a
+    selection that ends on the comment above a header touches that header's section."""
+    touched = [b for b in blocks(lines) if b.start <= last and b.stop > first]
+    return touched[0].start, touched[-1].stop
 
 
 def _check_range(case: Case, first: int, last: int) -> None:
@@ -174,3 +165,13 @@ async def test_range_formatting_over_the_protocol_keeps_every_section(client: La
             line for line in text.splitlines() if _HEADER.match(line)
         ), (first, last)
     close_file(client, path)
+
+
+def test_a_selection_ending_on_the_comment_above_a_header_touches_that_section(cases: list[Case]) -> None:
+    """Found by the property test: lines 15-27 of zltech-sim__zlac8015d.eds end on the comment right above
+    [2008], so [2008] is formatted too; the check had taken the comment for the end of the section before it."""
+    case = next((c for c in cases if c.path.name == "zltech-sim__zlac8015d.eds"), None)
+    if case is None:
+        pytest.skip("zltech-sim__zlac8015d.eds is not in ../shared/eds-corpus")
+    assert case.text.splitlines()[27].startswith(";") and case.text.splitlines()[28] == "[2008]"
+    _check_range(case, 15, 27)

@@ -50,7 +50,9 @@ def _same_device(text: str) -> str:
 def test_gen_from_xdd_equals_gen_from_its_eds(tmp_path: Path, xdd: Path, eds: Path) -> None:
     from_xdd = _generated(tmp_path / "x", shared_file(xdd))
     from_eds = _generated(tmp_path / "e", shared_file(eds))
-    assert sorted(from_xdd) == sorted(from_eds) == ["demo.c", "demo.h", "demo.md", "demo.py", "demo.rs"]
+    assert sorted(from_xdd) == sorted(from_eds)
+    code = sorted(name for name in from_xdd if not name.endswith(".svg"))  # beside the page: its PDO pictures
+    assert code == ["demo.c", "demo.h", "demo.md", "demo.py", "demo.rs"]
     for name in from_xdd:
         if name == "demo.md" or name == "demo.py":
             assert _same_device(from_xdd[name]) == _same_device(from_eds[name]), name

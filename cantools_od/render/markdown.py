@@ -14,14 +14,14 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from ..model import Device, NodeIdExpr, Object
-from ..model.cia301.cobid import VALID
-from ..views.bitfield import diagram
+from ..model import Device, Object
+from ..views.bitfield import cob_id_text, diagram
 from ..views.codegen import DeviceView, EntryView, ObjectView, PdoView
 from ..views.reference import (
     NONE,
     TYPE_KINDS,
     limits_text,
+    mapped_by,
     source_name,
     summary,
     type_definition,
@@ -111,12 +111,8 @@ def _summary(view: DeviceView) -> list[list[str]]:
 
 
 def _cob_id(pdo: PdoView) -> str:
-    cob = pdo.pdo.cob_id
-    if cob is None:
-        return NONE
-    value = cob.offset if isinstance(cob, NodeIdExpr) else cob
-    text = f"`{cob.canonical()}`" if isinstance(cob, NodeIdExpr) else f"`0x{cob:X}`"
-    return text + (" (not valid)" if value & VALID else "")
+    """The COB-ID as the file writes it (a `$NODEID` formula left as one)."""
+    return NONE if pdo.pdo.cob_id is None else cob_id_text(pdo.pdo.cob_id, None, lambda text: f"`{text}`")
 
 
 def _pdo_row(pdo: PdoView, anchors: set[int]) -> list[str]:
@@ -174,15 +170,7 @@ def _grid(pdo: PdoView) -> list[list[str]]:
 
 def _mapped(view: DeviceView) -> dict[tuple[int, int], list[str]]:
     """(index, sub-index) → the PDOs that map it by default, as links."""
-    found: dict[tuple[int, int], list[str]] = {}
-    for pdo in view.pdos:
-        for entry in pdo.fields:
-            if entry.entry is not None:
-                names = found.setdefault((entry.entry.index, entry.entry.subindex), [])
-                name = f"[{pdo.pdo.name}](#{pdo.struct_name})"
-                if name not in names:
-                    names.append(name)
-    return found
+    return {key: [f"[{name}](#{name.lower()})" for name in names] for key, names in mapped_by(view).items()}
 
 
 # --- objects ------------------------------------------------------------------------------------------------

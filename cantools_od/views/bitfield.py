@@ -11,6 +11,7 @@ Everything here is counted in cells and bits; render/svg.py turns it into pixels
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import Enum
 
@@ -127,15 +128,16 @@ def _field(number: int, entry: PdoEntry) -> Field:
     )
 
 
-def cob_id_text(cob: int | NodeIdExpr | None, node_id: int | None) -> str:
-    """`0x185`, `$NODEID+0x180 (0x185)`, `$NODEID+0x180`, or `no COB-ID`; `(not valid)` after one with bit 31."""
+def cob_id_text(cob: int | NodeIdExpr | None, node_id: int | None, code: Callable[[str], str] = str) -> str:
+    """`0x185`, `$NODEID+0x180 (0x185)`, `$NODEID+0x180`, or `no COB-ID`; `(not valid)` after one with bit 31.
+    `code` marks the COB-ID as written (the Markdown page sets it in backticks)."""
     if cob is None:
         return "no COB-ID"
     if isinstance(cob, NodeIdExpr):
-        text = cob.canonical() if node_id is None else f"{cob.canonical()} (0x{cob.resolve(node_id):X})"
+        text = code(cob.canonical()) + (f" (0x{cob.resolve(node_id):X})" if node_id is not None else "")
         value = cob.offset
     else:
-        text, value = f"0x{cob:X}", cob
+        text, value = code(f"0x{cob:X}"), cob
     return text + (" (not valid)" if value & VALID else "")
 
 

@@ -22,7 +22,7 @@ from cantools_od.render import renderer
 from cantools_od.render.svg import sheet
 from cantools_od.views.bitfield import diagram
 from cantools_od.views.codegen import build_view
-from cantools_od.views.pdo import pdo_map
+from cantools_od.views.pdo import Pdo, pdo_map
 from cantools_od.xdd import refused
 
 from support import EXAMPLES, ROOT, SHARED, cli_command, corpus_devices
@@ -38,10 +38,10 @@ XML_CORPUS = sorted(
 MEASURE = (Path(__file__).parent / "measure_pictures.js").read_text(encoding="utf-8")
 
 
-def expected(path: Path) -> dict[str, dict[str, list[int]]]:
+def expected(pdos: list[Pdo]) -> dict[str, dict[str, list[int]]]:
     """Per PDO: each field's number → its bits, from the model (0: the unused bits that end the last byte)."""
     found: dict[str, dict[str, list[int]]] = {}
-    for pdo in pdo_map(load(path)):
+    for pdo in pdos:
         fields = {str(n): list(range(e.bit_offset, e.bit_offset + e.bit_length)) for n, e in enumerate(pdo.entries, 1)}
         end = -(-pdo.bit_length // 8) * 8
         if pdo.entries and end > pdo.bit_length:
@@ -50,9 +50,9 @@ def expected(path: Path) -> dict[str, dict[str, list[int]]]:
     return found
 
 
-def check_pictures(page: Page, path: Path) -> None:
+def check_pictures(page: Page, path: Path, pdos: list[Pdo]) -> None:
     measured = page.evaluate(MEASURE)
-    want = expected(path)
+    want = expected(pdos)
     assert set(measured) == set(want), path.name
     for name, fields in want.items():
         got = measured[name]
@@ -65,15 +65,17 @@ def check_pictures(page: Page, path: Path) -> None:
         assert set(fields) == set(got["legend"]), f"{path.name} {name}: the legend"
 
 
-def with_pdos() -> list[Path]:
-    return [path for path in [*EXAMPLES.glob("*.eds"), *EDS_CORPUS] if _has_pdos(path)]
-
-
-def _has_pdos(path: Path) -> bool:
-    try:
-        return any(p.entries for p in pdo_map(load(path)))
-    except Exception:  # a file the reader refuses has no pictures to check
-        return False
+def with_pdos() -> list[tuple[Path, list[Pdo]]]:
+    """Each example and corpus file that maps anything, with its PDOs, each file read once."""
+    found = []
+    for path in [*EXAMPLES.glob("*.eds"), *EDS_CORPUS]:
+        try:
+            pdos = pdo_map(load(path))
+        except Exception:  # a file the reader refuses has no pictures to check
+            continue
+        if any(p.entries for p in pdos):
+            found.append((path, pdos))
+    return found
 
 
 def test_pdo_pictures_cover_exactly_their_bits_in_a_browser(tmp_path: Path) -> None:
@@ -81,11 +83,11 @@ def test_pdo_pictures_cover_exactly_their_bits_in_a_browser(tmp_path: Path) -> N
     assert len(files) >= 20, "the corpus has fewer files with PDOs than it had"
     with browser() as chrome:
         page = chrome.page()
-        for number, path in enumerate(files):
+        for number, (path, pdos) in enumerate(files):
             svg = tmp_path / f"{number}.svg"
-            svg.write_text(sheet([diagram(p) for p in pdo_map(load(path))]), encoding="utf-8")
+            svg.write_text(sheet([diagram(p) for p in pdos]), encoding="utf-8")
             page.open(svg)
-            check_pictures(page, path)
+            check_pictures(page, path, pdos)
 
 
 def test_pdo_svg_from_the_command_line(tmp_path: Path) -> None:
@@ -169,7 +171,7 @@ def test_html_page_in_a_browser(tmp_path: Path) -> None:
         assert "6041" in found["byName"] and "1000" not in found["byName"]
         assert found["none"] == []
         assert len(found["all"]) == len(load(example).objects)
-        check_pictures(page, example)
+        check_pictures(page, example, pdo_map(load(example)))
         assert page.evaluate("location.hash = '#1A00-1'; document.getElementById('1A00-1').matches(':target')")
 
 

@@ -11,6 +11,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from lintkit import comm, eds, mapping, where
 
 from support import SHARED, cli_command
 
@@ -280,3 +281,21 @@ def test_a_const_entry_configured_otherwise_in_a_dcf_is_reported(tmp_path: Path)
     assert _at(_lint(_need(PILZ)), "EDS064") == []
     copy = _edit_section(PILZ, "6098", "ParameterValue=0", "ParameterValue=35", tmp_path)
     assert _at(_lint(copy), "EDS064") == ["[6098] is const: ParameterValue=35, but it holds 0"]
+
+
+# Apach200/0_F407's CANopenEditor project: TPDO2 (valid, 280h + node-ID) pads its frame with a one-byte dummy
+# between three entries of 6038h.
+PADDED = SHARED / "eds-history" / "Apach200__0_F407__2" / "new.xdd"
+
+
+def test_a_dummy_in_a_canopennode_tpdo_is_sent_as_zeros_not_an_error(tmp_path: Path) -> None:
+    # CANopenNode maps a TPDO's dummy entry to a reader that sends zeros (301/CO_PDO.c, OD_read_dummy)
+    assert [f for f in _lint(_need(PADDED)) if f["code"] == "PDO051"] == []
+    # the same mapping in an EDS: with the canopennode profile the device is CANopenNode's, without it no stack
+    # is named and CiA 301 has no dummy mapping for a TPDO
+    plain = tmp_path / "padded.eds"
+    plain.write_text(eds(comm(0x1801, "$NODEID+0x280"), mapping(0x1A01, "0x60000108", "0x00020008")))
+    assert [f["code"] for f in _lint(plain, "--profile", "canopennode") if f["code"] == "PDO051"] == []
+    assert [(f["line"], f["message"]) for f in _lint(plain) if f["code"] == "PDO051"] == [
+        (where(plain.read_text(), "1A01sub2", "DefaultValue"), "TPDO2: dummy entry 0x00020008 in a TPDO")
+    ]

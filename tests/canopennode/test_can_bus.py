@@ -19,6 +19,7 @@ from pathlib import Path
 
 import pytest
 from cnokit import DEMO, HERE, STACK, gen, run, stack
+from demo_app import Application
 
 NODE_ID = 10
 FRAME = struct.Struct("<IB3x8s")  # identifier (bit 30: RTR), DLC, data: the hostcan driver's frame
@@ -27,12 +28,22 @@ RTR = 0x40000000
 RUNTIME_OWNED = {0x1001, 0x1003}
 
 
-def build_device(od_dir: Path, work: Path) -> Path:
+def build_device(od_dir: Path, work: Path, application: Application | None = None) -> Path:
+    """The stack with the OD in `od_dir` and the TCP driver; with `application`, its sources and hooks too."""
     sources = [STACK / "CANopen.c", STACK / "storage" / "CO_storage.c", HERE / "hostcan" / "CO_driver_tcp.c"]
     sources += [p for folder in ("301", "303", "304", "305") for p in sorted((STACK / folder).glob("*.c"))]
     flags = ["-DDEVICE_TCP", f"-I{HERE / 'hostcan'}", f"-I{od_dir}", f"-I{STACK}"]
+    objects: list[Path] = []
+    if application is not None:
+        flags += [application.define, *(f"-I{folder}" for folder in application.includes)]
+        for source in application.sources:
+            # -I-: a file's own folder is not searched first, so a demo source in ../shared includes the OD.h
+            # generated here, not CANopenEditor's next to it; then CO_driver.h needs its folder for CO_config.h
+            objects.append(work / f"app_{source.stem}.o")
+            run(["gcc", "-O1", "-I-", *flags, f"-I{STACK / '301'}", "-c", "-o", str(objects[-1]), str(source)])
     exe = work / "device"
-    run(["gcc", "-O1", *flags, "-o", str(exe), str(HERE / "device_main.c"), str(od_dir / "OD.c"), *map(str, sources)])
+    run(["gcc", "-O1", *flags, "-o", str(exe), str(HERE / "device_main.c"), str(od_dir / "OD.c"),
+         *map(str, sources + objects)])  # fmt: skip
     return exe
 
 

@@ -1,43 +1,75 @@
-"""`probe` against the real CANopenNode stack: the device of test_can_bus.py (the stack with the OD generated
-from demoDevice.eds, its CAN bridged from TCP to python-can's `virtual` bus), probed with its own EDS and with
-the EDS changed: each change gives exactly its finding."""
+"""`probe` against the real CANopenNode stack: the demo device as CANopenDemo's authors build it (the stack, the
+OD generated from demoDevice.eds, the demo's application: CO_application.c and the sources it initialises) behind
+the TCP driver of test_can_bus.py, bridged to python-can's `virtual` bus; probed with its own EDS and with the
+EDS changed: each change gives exactly its finding. Without the snapshot of CANopenDemo (the application's other
+sources), the device with the demo's CO_identificators.c alone, from ../shared."""
 
 from __future__ import annotations
 
 import contextlib
 import re
 import socket
+import struct
 import subprocess
 import uuid
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from pathlib import Path
+from typing import cast
 
+import mirrors
 import pytest
 from cnokit import DEMO, gen, stack
+from demo_app import REPO, Application, demo_application, ident_string, identificators
 from test_can_bus import NODE_ID, Bridge, build_device
 
 from cantools_od.api import load, loads
 from cantools_od.lint import Finding
 from cantools_od.live.probe import ProbeOptions, Prober, ProbeResult
 from cantools_od.model import Device
+from cantools_od.model.cia301 import aborts
+from cantools_od.model.cia301.objects import ERROR_HISTORY
 
 EDS = DEMO / "demoDevice.eds"
 
 
-@pytest.fixture(scope="module")
-def device_exe(tmp_path_factory: pytest.TempPathFactory) -> Path:
+@dataclass(frozen=True)
+class Built:
+    exe: Path
+    application: Application
+
+
+def _built(factory: pytest.TempPathFactory, name: str, application_of: Callable[[Path], Application]) -> Built:
     stack()
-    work = tmp_path_factory.mktemp("probe-stack")
+    work = factory.mktemp(name)
+    application = application_of(work)
     assert gen(EDS, work / "od").returncode == 0
-    return build_device(work / "od", work)
+    return Built(build_device(work / "od", work, application), application)
 
 
 @pytest.fixture(scope="module")
-def baseline(device_exe: Path) -> set[tuple[str, str]]:
-    """What probe --check-writes reports with the unchanged EDS (the entries without storage, and writes the
-    stack refuses in its present state): each change must add exactly its own finding to it."""
-    found = probed(device_exe, load(EDS, node_id=NODE_ID), check_writes=True).findings
-    return {(finding.code, finding.message) for finding in found}
+def demo_device(tmp_path_factory: pytest.TempPathFactory) -> Built:
+    """The stack, our OD and the demo's whole application (skipped without the snapshot of CANopenDemo)."""
+    return _built(tmp_path_factory, "demo-device", demo_application)
+
+
+@pytest.fixture(scope="module")
+def identified_device(tmp_path_factory: pytest.TempPathFactory) -> Built:
+    """The stack, our OD and CO_identificators.c from ../shared, with the identity the EDS describes."""
+    return _built(tmp_path_factory, "identified-device", lambda work: identificators(work, load(EDS)))
+
+
+@pytest.fixture(scope="module")
+def device(request: pytest.FixtureRequest) -> Built:
+    """The demo device; without the snapshot of CANopenDemo, the device ../shared alone builds."""
+    return cast(Built, request.getfixturevalue("demo_device" if mirrors.git_dir(REPO) else "identified_device"))
+
+
+@pytest.fixture(scope="module")
+def baseline(device: Built) -> ProbeResult:
+    """What probe --check-writes reports on the device with the unchanged EDS: each change must add exactly its
+    own finding to it."""
+    return probed(device.exe, load(EDS, node_id=NODE_ID), check_writes=True)
 
 
 @contextlib.contextmanager
@@ -97,24 +129,60 @@ def without_storage(od_c: str) -> set[tuple[int, int]]:
     return found
 
 
-def test_probe_of_the_stack_with_its_own_eds_finds_only_entries_the_stack_stores_nothing_for(
-    device_exe: Path,
-) -> None:
-    """The generated OD gives some entries no data (an empty DefaultValue; 100Ah, which the EDS makes a
-    REAL64 and CiA 301 a VISIBLE_STRING): the stack says they do not exist. Everything else agrees."""
-    result = probed(device_exe, load(EDS, node_id=NODE_ID))
-    assert {f.code for f in result.findings} == {"PRB001"}, [f.format() for f in result.findings]
-    od_c = (device_exe.parent / "od" / "OD.c").read_text(encoding="utf-8")
-    read = {(reading.index, reading.subindex) for reading in result.readings}  # DOMAIN entries are not read
-    assert {_entry(f) for f in result.findings} == without_storage(od_c) & read
+def _values(result: ProbeResult) -> dict[tuple[int, int], bytes | None]:
+    return {(reading.index, reading.subindex): reading.data for reading in result.readings}
+
+
+def _average(values: dict[tuple[int, int], bytes | None]) -> float:
+    """What objectAccessOD.c answers for 2120sub5: the mean of sub-indices 1 to 4 (INTEGER64, UNSIGNED64,
+    REAL32, REAL64), summed as doubles in that order."""
+    numbers = [struct.unpack(f"<{kind}", values[0x2120, sub] or b"")[0] for sub, kind in enumerate("qQfd", 1)]
+    return sum(float(number) for number in numbers) / 4
+
+
+def test_probe_of_the_demo_device_with_its_own_eds_finds_only_its_power_on_counter(demo_device: Built) -> None:
+    """Every entry the EDS lists answers, with its type's length, its identity, and the value the EDS gives it.
+    The entries the OD holds no data for answer from the application: 1008h-100Ah the strings of its
+    CO_ident_defs.h (CO_identificators.c), 2120sub5 the average objectAccessOD.c computes. The one difference
+    is true, and an info: app_programStart counts the start in 2106h, whose DefaultValue is 0."""
+    result = probed(demo_device.exe, load(EDS, node_id=NODE_ID))
+    assert [(f.code, _entry(f)) for f in result.findings] == [("PRB005", (0x2106, 0))], [
+        f.format() for f in result.findings
+    ]
+    assert "the device holds 1," in result.findings[0].message
     assert result.read > 150
-    print(f"\nprobe read {result.read} entries of the CANopenNode device in {result.seconds:.2f} s")
+    unanswered = {(r.index, r.abort) for r in result.readings if r.data is None}
+    assert unanswered <= {(ERROR_HISTORY, aborts.NO_DATA)}, unanswered  # an error history without errors
+    values, ident_defs = _values(result), demo_device.application.ident_defs
+    for index, name in ((0x1008, "CO_DEVICE_NAME"), (0x1009, "CO_HW_VERSION"), (0x100A, "CO_SW_VERSION")):
+        assert values[index, 0] == ident_string(ident_defs, name), f"{index:04X}"
+    assert values[0x2120, 5] == struct.pack("<d", _average(values))
+    print(f"\nprobe read {result.read} entries of the demo device in {result.seconds:.2f} s")
 
 
-def test_writing_back_every_writable_entry_is_refused_nowhere(baseline: set[tuple[str, str]]) -> None:
-    """--check-writes on the stack: no write of a value just read is refused (the inhibit time and SYNC start
-    value of a valid TPDO, which the stack refuses as CiA 301 says, are not written)."""
-    assert {code for code, _ in baseline} == {"PRB001"}, sorted(baseline)
+def test_writing_back_every_writable_entry_is_refused_nowhere(device: Built, baseline: ProbeResult) -> None:
+    """--check-writes: every writable entry gets back the value just read (the inhibit time and SYNC start value
+    of a valid TPDO, which the stack refuses as CiA 301 says, excepted), and the device refuses none: the
+    findings are those of the reads alone."""
+    reads = probed(device.exe, load(EDS, node_id=NODE_ID))
+    writes = baseline.transfers - reads.transfers
+    assert [(f.code, f.message) for f in baseline.findings] == [(f.code, f.message) for f in reads.findings]
+    assert writes > 100
+    print(f"\nwrote back {writes} entries")
+
+
+def test_probe_of_the_stack_with_the_demos_identificators_alone(identified_device: Built) -> None:
+    """The device ../shared alone builds: the stack, our OD and CO_identificators.c. The entries the generated
+    OD gives no data (`.dataOrig = NULL`) and nothing serves do not exist for the stack (0609 0011h,
+    CO_ODinterface.c's OD_readOriginal): only 2120sub5, which objectAccessOD.c would serve."""
+    result = probed(identified_device.exe, load(EDS, node_id=NODE_ID))
+    od_c = (identified_device.exe.parent / "od" / "OD.c").read_text(encoding="utf-8")
+    read = {(reading.index, reading.subindex) for reading in result.readings}  # DOMAIN entries are not read
+    served = {(0x1008, 0), (0x1009, 0), (0x100A, 0)}
+    assert {f.code for f in result.findings} == {"PRB001"}, [f.format() for f in result.findings]
+    assert {_entry(f) for f in result.findings} == (without_storage(od_c) & read) - served == {(0x2120, 5)}
+    values = _values(result)
+    assert values[0x1008, 0] == ident_string(identified_device.application.ident_defs, "CO_DEVICE_NAME")
 
 
 @pytest.mark.parametrize(
@@ -134,10 +202,11 @@ def test_writing_back_every_writable_entry_is_refused_nowhere(baseline: set[tupl
     ],
 )  # fmt: skip
 def test_each_change_of_the_eds_gives_exactly_its_finding(
-    device_exe: Path, baseline: set[tuple[str, str]], old: str, new: str, code: str
+    device: Built, baseline: ProbeResult, old: str, new: str, code: str
 ) -> None:
     text = EDS.read_text(encoding="utf-8")
     assert text.count(old) >= 1, old
     changed = loads(text.replace(old, new, 1), source=str(EDS), node_id=NODE_ID)
-    found = [f for f in probed(device_exe, changed, check_writes=True).findings if (f.code, f.message) not in baseline]
+    before = {(f.code, f.message) for f in baseline.findings}
+    found = [f for f in probed(device.exe, changed, check_writes=True).findings if (f.code, f.message) not in before]
     assert [f.code for f in found] == [code], [f.format() for f in found]

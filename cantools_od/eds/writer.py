@@ -7,7 +7,7 @@ from typing import Any
 
 from ..model import Device, NodeIdExpr, Object, Section, SubObject, Variable
 from ..model.cia301.pdo import partner
-from ..model.device import Comments, Commissioning, DeviceInfo, FileInfo
+from ..model.device import OBJECT_LISTS, Comments, Commissioning, DeviceInfo, FileInfo, ObjectList, object_lists_of
 from .compact import compact_form_holds, implicit_sub_name, implied_pdo_objects, same_object
 from .dialect import text_dialect
 from .format import CANONICAL, IntStyle, Radix, format_key, format_value, reads_hint
@@ -66,11 +66,7 @@ def sections(
         out.append(_with_extra("DummyUsage", entries, usage, style))
     if device.comments is not None:
         out.append(comments_section(device.comments, style))
-    for name, attr in (
-        ("MandatoryObjects", device.mandatory_objects),
-        ("OptionalObjects", device.optional_objects),
-        ("ManufacturerObjects", device.manufacturer_objects),
-    ):
+    for name, attr in _object_lists(device).items():
         if attr is not None:
             entries = (
                 {"SupportedObjects": format_key("", attr.supported_objects)}
@@ -86,6 +82,15 @@ def sections(
     for raw in [*device.module_sections, *device.other_sections]:
         out.append(_with_extra(raw.name, dict(raw.entries), raw, style))
     return out
+
+
+def _object_lists(device: Device) -> dict[str, ObjectList | None]:
+    """The lists as the model holds them; for a device read from an XDD, which has none (CiA 311 lists no
+    objects), the lists CiA 306 requires of its objects, so that the EDS is complete for tools that follow them."""
+    held: dict[str, ObjectList | None] = {name: getattr(device, attr) for name, attr in OBJECT_LISTS.items()}
+    if device.file_format != "xdd" or any(found is not None for found in held.values()):
+        return held
+    return dict(object_lists_of(_explicit_indices(device)))
 
 
 def _explicit_indices(device: Device) -> set[int]:

@@ -6,8 +6,9 @@ from collections.abc import Callable, Collection, Iterator
 
 from ..eds import keys
 from ..model import Device, Location, ObjectList, Severity
-from ..model.cia301.objects import DATA_TYPE_AREA, MANUFACTURER_AREA
+from ..model.cia301.objects import DATA_TYPE_AREA
 from ..model.cia301.objects import MANDATORY as MANDATORY_INDICES
+from ..model.device import OBJECT_LISTS, object_list_home
 from ..model.source import location
 from .common import file_start
 from .rules import Context, Finding, Fix, rule
@@ -15,7 +16,7 @@ from .rules import Context, Finding, Fix, rule
 E, W = Severity.ERROR, Severity.WARNING
 
 MANDATORY, OPTIONAL, MANUFACTURER = "MandatoryObjects", "OptionalObjects", "ManufacturerObjects"
-LISTS = {MANDATORY: "mandatory_objects", OPTIONAL: "optional_objects", MANUFACTURER: "manufacturer_objects"}
+LISTS = OBJECT_LISTS
 
 
 def object_list(device: Device, name: str) -> ObjectList | None:
@@ -23,13 +24,7 @@ def object_list(device: Device, name: str) -> ObjectList | None:
     return found
 
 
-def home(index: int) -> str | None:
-    """The list an object belongs in by its index; None for data types (not listed)."""
-    if index < DATA_TYPE_AREA.stop:
-        return None
-    if index in MANDATORY_INDICES:
-        return MANDATORY
-    return MANUFACTURER if index in MANUFACTURER_AREA else OPTIONAL
+home = object_list_home
 
 
 def listings(device: Device) -> Iterator[tuple[str, ObjectList, int, int]]:

@@ -8,7 +8,8 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, PrivateAttr
 
-from .cia301.objects import DATA_TYPE_AREA
+from .cia301.objects import DATA_TYPE_AREA, MANUFACTURER_AREA
+from .cia301.objects import MANDATORY as MANDATORY_INDICES
 from .datatypes import DOMAIN, DataType, standard_type
 from .objects import Object, ObjectKind, Section, Variable
 from .source import Diagnostic, Severity
@@ -98,6 +99,36 @@ class Commissioning(Section):
     net_refd: str | None = None
     canopen_manager: bool | None = None
     lss_serial_number: int | None = None
+
+
+# CiA 306's object lists: section name → the Device field that holds it.
+OBJECT_LISTS = {
+    "MandatoryObjects": "mandatory_objects",
+    "OptionalObjects": "optional_objects",
+    "ManufacturerObjects": "manufacturer_objects",
+}
+
+
+def object_list_home(index: int) -> str | None:
+    """The object list (its section name) an object belongs in by its index; None for data types, not listed."""
+    if index < DATA_TYPE_AREA.stop:
+        return None
+    if index in MANDATORY_INDICES:
+        return "MandatoryObjects"
+    return "ManufacturerObjects" if index in MANUFACTURER_AREA else "OptionalObjects"
+
+
+def object_lists_of(indices: Collection[int]) -> dict[str, ObjectList]:
+    """The three object lists that list these objects, each in index order (every list, even an empty one)."""
+    homes: dict[str, list[int]] = {name: [] for name in OBJECT_LISTS}
+    for index in sorted(indices):
+        home = object_list_home(index)
+        if home is not None:
+            homes[home].append(index)
+    return {
+        name: ObjectList.model_construct(supported_objects=len(listed), entries=dict(enumerate(listed, start=1)))
+        for name, listed in homes.items()
+    }
 
 
 class RawSection(Section):

@@ -17,7 +17,6 @@ from ..model import (
     NodeIdExpr,
     Object,
     ObjectKind,
-    ObjectList,
     Origin,
     Severity,
     SubObject,
@@ -33,12 +32,11 @@ from ..model.cia301.objects import (
     IDENTITY_PRODUCT_CODE,
     IDENTITY_REVISION,
     IDENTITY_VENDOR_ID,
-    MANDATORY,
-    MANUFACTURER_AREA,
     SDO_SERVERS,
 )
 from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
 from ..model.datatypes import DOMAIN
+from ..model.device import OBJECT_LISTS, object_lists_of
 from .capacity import PROSE_CAPACITY
 from .entries import loc
 from .facts import Norm, Source
@@ -134,16 +132,8 @@ def _dynamic_mapping(device: Device) -> bool:
 
 
 def _lists(device: Device) -> None:
-    mandatory = [i for i in MANDATORY if i in device.objects]
-    optional = [i for i in device.objects if i not in mandatory and i not in MANUFACTURER_AREA]
-    manufacturer = [i for i in device.objects if i in MANUFACTURER_AREA]
-    for attr, indices in (
-        ("mandatory_objects", mandatory),
-        ("optional_objects", optional),
-        ("manufacturer_objects", manufacturer),
-    ):
-        listed = ObjectList(supported_objects=len(indices), entries={n: i for n, i in enumerate(indices, start=1)})
-        setattr(device, attr, listed)
+    for name, listed in object_lists_of(device.objects).items():
+        setattr(device, OBJECT_LISTS[name], listed)
 
 
 def _object(obj: MergedObject, info: BuildInfo, problems: list[Diagnostic]) -> Object | None:

@@ -178,7 +178,7 @@ COMMANDS: dict[str, list[str]] = {
     "diff": ["diff", "{orig}", "{file}", "--format", "json"],
 }
 WRITES_INPUT = ("fmt", "lint-fix")
-EXIT_CODES = (0, 1, 2)  # README: 0 ok, 1 findings, 2 usage error or input that cannot be read
+EXIT_CODES = (0, 1, 2)  # docs/cli.md: 0 ok, 1 findings, 2 usage error or input that cannot be read
 # Python speaking instead of the tool: exception names, int()'s messages, the digit limit.
 PYTHON_TALK = re.compile(
     r"Traceback|\b(?:Value|Type|Key|Index|Attribute|Unicode\w*|Overflow|Recursion|Assertion)Error\b"

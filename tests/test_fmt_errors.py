@@ -1,7 +1,8 @@
 """What "a file with errors is left as it is" means for `fmt` and `convert`, said alike by the code, `--help` and
-the README: an error of the reader's (a value or section it cannot read, which the canonical form could not carry)
-leaves the file as it is, exit 1, nothing written; an error of lint's rules (here EDS040: [DeviceInfo] says another
-product than 1018h) is lint's to report, and the file is formatted and converted, unchanged for peers."""
+the command pages (docs/commands/): an error of the reader's (a value or section it cannot read, which the
+canonical form could not carry) leaves the file as it is, exit 1, nothing written; an error of lint's rules (here
+EDS040: [DeviceInfo] says another product than 1018h) is lint's to report, and the file is formatted and
+converted, unchanged for peers."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from docpages import page_synopsis, page_text
 
 from support import EXAMPLES, ROOT, cli_command
 
@@ -54,11 +56,13 @@ def test_an_error_of_lint_rules_is_lints_to_report(tmp_path: Path) -> None:
     assert b"ProductNumber=0x00000001" in (tmp_path / "drive.eds").read_bytes()
 
 
-def test_help_and_readme_say_the_same(tmp_path: Path) -> None:
-    readme = re.sub(r"\s+", " ", (ROOT / "README.md").read_text(encoding="utf-8"))
+def test_help_and_pages_say_the_same(tmp_path: Path) -> None:
+    pages = {command: re.sub(r"\s+", " ", page_text(command)) for command in ("fmt", "convert")}
     for command in ("fmt", "convert"):
         said = re.sub(r"\s+", " ", run(command, "--help", cwd=tmp_path).stdout)
         assert PROMISE in said and "the errors of lint's rules are lint's to report" in said, said
-        row = next(line for line in readme.split("| `cantools-od ")[1:] if line.startswith(command + " "))
-        assert PROMISE in row, row
-    assert "The errors of lint's rules" in readme and "with errors is left" not in readme
+        summary = page_synopsis(command)[1]
+        assert PROMISE in summary, summary
+        assert "the errors of lint's rules" in pages[command].lower(), command
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert all("with errors is left" not in text for text in [readme, *pages.values()])

@@ -1,6 +1,8 @@
-"""The README's command table is the one list of what each command takes and reads; the help texts
-must say the same: every command has a row, every option of a command is in its row, and the help
-names every file format and target its row names. A help text or a row that drifts fails here."""
+"""Where each command is written down, and that it says what the command does. The README's table has one row
+per command, a line each, linking the command's page; docs/commands/<name>.md gives the full synopsis and the
+rules. The help texts must say the same: every option of a command is named in its page's synopsis and again in
+the page's text, and the help names every file format and target the row and the page name. A help text, a row
+or a page that drifts fails here; so does a command line the README or a command page shows that does not run."""
 
 from __future__ import annotations
 
@@ -12,6 +14,7 @@ from pathlib import Path
 
 import click
 import pytest
+from docpages import PAGES, page_synopsis
 
 from cantools_od.cli import COMMANDS, main
 
@@ -54,21 +57,30 @@ def said(text: str, word: str) -> bool:
     return re.search(rf"(?<![\w-]){re.escape(word)}(?![\w-])", text, re.IGNORECASE) is not None
 
 
-def test_every_command_has_a_row() -> None:
+def test_every_command_has_a_row_and_a_page() -> None:
     assert set(COMMANDS) <= set(ROWS), sorted(set(COMMANDS) - set(ROWS))
     assert set(ROWS) - {"--version"} <= set(COMMANDS)
+    lacking = [name for name in COMMANDS if f"(docs/commands/{name}.md)" not in ROWS[name]]
+    assert not lacking, f"README rows that do not link their page: {lacking}"
+    assert {page.stem for page in PAGES.glob("*.md")} == set(COMMANDS), "docs/commands/ has a page per command"
 
 
 @pytest.mark.parametrize("name", sorted(COMMANDS))
-def test_every_option_is_in_the_readme(name: str) -> None:
-    missing = [spellings for spellings in options(command(name)) if not any(said(ROWS[name], o) for o in spellings)]
-    assert not missing, f"README row of {name} lacks {missing}"
+def test_every_option_is_on_its_page(name: str) -> None:
+    """Named in the synopsis, and again in the page's text, where what it does is said."""
+    written, summary, rest = page_synopsis(name)
+    spelled = options(command(name))
+    missing = [spellings for spellings in spelled if not any(said(written, o) for o in spellings)]
+    assert not missing, f"the synopsis of docs/commands/{name}.md lacks {missing}"
+    unexplained = [spellings for spellings in spelled if not any(said(f"{summary}\n{rest}", o) for o in spellings)]
+    assert not unexplained, f"docs/commands/{name}.md names {unexplained} only in its synopsis"
 
 
 @pytest.mark.parametrize("name", sorted(COMMANDS))
-def test_help_names_the_formats_its_row_names(name: str) -> None:
+def test_help_names_the_formats_its_row_and_page_name(name: str) -> None:
     """Both the command's --help and the line `cantools-od --help` gives it, when that names formats."""
-    named = [word for word in FORMATS if re.search(rf"\b{word}\b", what_it_does(ROWS[name]))]
+    summary = page_synopsis(name)[1]
+    named = [word for word in FORMATS if re.search(rf"\b{word}\b", f"{what_it_does(ROWS[name])} {summary}")]
     cmd = command(name)
     help_text = cmd.help or ""
     assert all(word in help_text for word in named), f"{name} --help names not all of {named}:\n{help_text}"
@@ -78,20 +90,21 @@ def test_help_names_the_formats_its_row_names(name: str) -> None:
 
 
 @pytest.mark.parametrize("name", sorted(COMMANDS))
-def test_help_and_row_name_every_choice(name: str) -> None:
-    """Targets (gen -t), output formats, profiles: a row that lists choices lists all of them (one that
-    lists none points to the docs); gen's targets are in its help line too."""
+def test_help_and_page_name_every_choice(name: str) -> None:
+    """Targets (gen -t), output formats, profiles: a page's synopsis and summary that list choices list all of
+    them; gen's targets are in its help line too."""
+    written, summary, _ = page_synopsis(name)
     for param in command(name).params:
         if isinstance(param, click.Option) and isinstance(param.type, click.Choice):
             choices = [str(choice) for choice in param.type.choices]
-            listed = [choice for choice in choices if said(ROWS[name], choice)]
+            listed = [choice for choice in choices if said(f"{written} {summary}", choice)]
             assert not listed or listed == choices, (name, param.opts, choices)
             if param.name == "targets":
                 top = COMMANDS[name][1].replace("OD.h/OD.c", "")
                 assert all(said(top, choice) for choice in choices), (top, choices)
 
 
-# Every command line the README shows runs as written ------------------------------------------------------------
+# Every command line the README and the command pages show runs as written ---------------------------------------
 
 PLACEHOLDERS = {
     "FILE...": "device.eds",
@@ -111,24 +124,29 @@ ROBOT = 'options:\n  dcf_path: "@BUS_CONFIG_PATH@"\n' + BUS  # ros2_canopen's in
 TABLE = "Index,Sub-index,Name,Data type,Access,Default\n0x1000,0,Device type,UNSIGNED32,ro,0\n"
 
 
-def synopsis(row: str) -> str:
-    """The row's command as a user types it with nothing optional: `[...]` left out, placeholders filled in."""
-    written = re.match(r"\| `cantools-od ([^`]*)`", row)
-    assert written is not None, row
-    text = written.group(1).replace("\\|", "|")
+def synopsis(written: str) -> str:
+    """A synopsis as a user types it with nothing optional: `[...]` left out, placeholders filled in."""
+    text = written.removeprefix("cantools-od ")
     while re.search(r"\[[^][]*\]", text):
         text = re.sub(r"\s*\[[^][]*\]", "", text)
     return " ".join(PLACEHOLDERS.get(word, word) for word in text.split())
 
 
+def row_synopsis(row: str) -> str:
+    written = re.match(r"\| `(cantools-od [^`]*)`", row)
+    assert written is not None, row
+    return synopsis(written.group(1).replace("\\|", "|"))
+
+
 def shown_lines() -> list[str]:
-    """The `cantools-od ...` lines of the README's sh blocks, comments left out."""
+    """The `cantools-od ...` lines of the sh blocks of the README and the command pages, comments left out."""
     lines, inside = [], False
-    for line in (ROOT / "README.md").read_text(encoding="utf-8").splitlines():
-        if line.startswith("```"):
-            inside = line == "```sh"
-        elif inside and line.startswith("cantools-od "):
-            lines.append(" ".join(line.split(" #")[0].split()[1:]))
+    for page in [ROOT / "README.md", *sorted(PAGES.glob("*.md"))]:
+        for line in page.read_text(encoding="utf-8").splitlines():
+            if line.startswith("```"):
+                inside = line == "```sh"
+            elif inside and line.startswith("cantools-od "):
+                lines.append(" ".join(line.split(" #")[0].split()[1:]))
     return lines
 
 
@@ -173,11 +191,13 @@ LIVE = ("probe", "simulate")  # commands that need a CAN bus with a device on it
 
 
 def lines_to_run() -> list[str]:
-    return [synopsis(row) for row in ROWS.values()] + shown_lines()
+    """Each line once: the README's rows, the pages' synopses, the lines shown in sh blocks."""
+    lines = [row_synopsis(row) for row in ROWS.values()] + [synopsis(page_synopsis(name)[0]) for name in COMMANDS]
+    return list(dict.fromkeys(lines + shown_lines()))
 
 
 @pytest.mark.parametrize("line", lines_to_run())
-def test_readme_command_lines_run_as_written(line: str, tmp_path: Path) -> None:
+def test_documented_command_lines_run_as_written(line: str, tmp_path: Path) -> None:
     """Why: the table's `gen` line failed as written (`-t dbc` without `--node-id`), and so did `network BUS.yml`.
     Each line, run by the shell in a folder holding the files it names, exits 0, or 1 for findings: never 2, a
     usage error."""

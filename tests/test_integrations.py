@@ -11,6 +11,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
+from docpages import PAGES, page_synopsis
 
 from support import ROOT, cli_command
 
@@ -78,7 +79,8 @@ def test_package_ships_py_typed(tmp_path: Path) -> None:
 
 def test_readme_facts_match_the_code() -> None:
     """The Python version the README asks for is the one pyproject.toml requires, and every option the
-    README's command table names is one the command's --help offers."""
+    README's command table and the command pages' synopses (docs/commands/) name is one the command's --help
+    offers."""
     import tomllib
 
     readme = (ROOT / "README.md").read_text("utf-8")
@@ -87,7 +89,9 @@ def test_readme_facts_match_the_code() -> None:
     assert f"Python {required[2:]}+" in readme
     rows = [line for line in readme.splitlines() if line.startswith("| `cantools-od ")]
     assert len(rows) >= 10
-    for row in rows:
+    synopses = [f"`{page_synopsis(page.stem)[0]}`" for page in sorted(PAGES.glob("*.md"))]
+    assert len(synopses) >= 10
+    for row in rows + synopses:
         usage = row.split("`")[1]
         command = usage.split()[1]
         if command.startswith("--"):
@@ -95,4 +99,4 @@ def test_readme_facts_match_the_code() -> None:
         helped = subprocess.run([*cli_command(), command, "--help"], capture_output=True, text=True, timeout=60)
         assert helped.returncode == 0, usage
         for option in {word.strip("[]|.") for word in usage.split() if word.lstrip("[").startswith("-")}:
-            assert option in helped.stdout, f"README: {usage}: {command} --help has no {option}"
+            assert option in helped.stdout, f"{usage}: {command} --help has no {option}"

@@ -357,7 +357,7 @@ def test_convert_refuses_a_node_id_the_file_is_not_commissioned_for(tmp_path: Pa
     assert source.read_bytes() == commissioned
 
 
-# 7. help and README: what the table cannot check (tests/test_help_readme.py checks the rest) -----
+# 7. help and docs: what the command pages cannot check (tests/test_help_readme.py checks the rest) -----
 
 
 def test_gen_explain_without_canopennode_is_refused_with_a_reason(tmp_path: Path) -> None:

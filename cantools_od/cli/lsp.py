@@ -13,7 +13,7 @@ import click
 def command(stdio: bool) -> None:
     """Serve the Language Server Protocol for EDS, DCF and XDD/XDC files: diagnostics as `lint`
     reports them, hover, go to definition, references, fixes, formatting as `fmt`, outline and
-    completion. An editor starts it; see README, "Editors"."""
+    completion. An editor starts it; see docs/editors.md."""
     from ..lsp.app import serve
 
     interrupted: list[int] = []

@@ -5,7 +5,7 @@ command-line selections.
 select = ["EDS", "PDO", "cobid"]   # codes, code prefixes or family names; default: every rule
 ignore = ["EDS032"]
 per-file-ignores = { "vendor/*.eds" = ["EDS003", "COB006"] }
-integer-radix = "as-written"       # how `fmt` spells integers; or a table by key (see README, "fmt")
+integer-radix = "as-written"       # how `fmt` spells integers; or a table by key (docs/commands/fmt.md)
 """
 
 from __future__ import annotations

@@ -210,9 +210,13 @@ def test_screenshot_matches_the_committed_image(kind: str, tmp_path: Path) -> No
 
 
 def test_the_readme_picture_is_current(tmp_path: Path) -> None:
-    """The picture the README shows is what `pdo --format svg -o` makes of the example today."""
+    """The picture the README (and pdo's page) shows is what `pdo --format svg -o` makes of the example today."""
     run = subprocess.run([*cli_command(), "pdo", str(EXAMPLES / "cia402_drive.eds"), "--format", "svg", "-o", "out"],
                          capture_output=True, text=True, cwd=tmp_path, check=False)  # fmt: skip
     assert run.returncode == 0, run.stderr
     shown = ROOT / "docs" / "pictures" / "cia402_drive.tpdo2.svg"
+    assert "](docs/pictures/cia402_drive.tpdo2.svg)" in (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "](../pictures/cia402_drive.tpdo2.svg)" in (ROOT / "docs" / "commands" / "pdo.md").read_text(
+        encoding="utf-8"
+    )
     assert (tmp_path / "out" / "tpdo2.svg").read_bytes() == shown.read_bytes(), f"regenerate {shown}"

@@ -1,6 +1,6 @@
 """The invariants of docs/outputs.md over real files: every writing command on a sample of ../shared (every kind:
 EDS, DCF, XDD, XDC) and on damaged variants of some (tests/fuzzkit.py), each also with its output pointed at its
-input. After each run: an exit code the README lists (0, 1, 2), no exception; no file changed in bytes or mode but
+input. After each run: an exit code docs/cli.md lists (0, 1, 2), no exception; no file changed in bytes or mode but
 the command's outputs, and the input only where the command rewrites it by design (`fmt`, `lint --fix`, with the
 mode kept); an output pointed at the input is refused and leaves everything as it was.
 
@@ -94,7 +94,7 @@ def sweep(folder: Path, name: str, data: bytes, command: Command) -> list[str]:
     said = f"{' '.join(args)} -> {result.exit_code}: {result.stderr[-300:]!r}"
     if result.exception is not None and not isinstance(result.exception, SystemExit):
         return [f"{said}: raised {type(result.exception).__name__}: {result.exception}"]
-    problems = [] if result.exit_code in (0, 1, 2) else [f"{said}: an exit code the README does not list"]
+    problems = [] if result.exit_code in (0, 1, 2) else [f"{said}: an exit code docs/cli.md does not list"]
     moved = changed(before, state(folder))
     if command.onto_input:
         if result.exit_code == 0 or moved:

@@ -308,6 +308,10 @@ def test_ctrl_c_exits_130_in_one_line(tmp_path: Path, command: str) -> None:
     assert not list(tmp_path.glob("**/*.tmp"))
 
 
-def test_help_and_readme_give_the_interrupted_code(tmp_path: Path) -> None:
+def test_help_and_docs_give_the_interrupted_code(tmp_path: Path) -> None:
+    """`cantools-od --help`, the README's line of exit codes and the exit-code table of docs/cli.md."""
     assert "130 interrupted (Ctrl-C)" in " ".join(run("--help", cwd=tmp_path).stdout.split())
-    assert "`130` interrupted" in (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "`130` interrupted" in " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    assert "| `130` | interrupted (Ctrl-C: one line, `cantools-od: interrupted`) |" in (
+        ROOT / "docs" / "cli.md"
+    ).read_text(encoding="utf-8")

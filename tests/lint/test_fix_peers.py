@@ -1,7 +1,7 @@
 """A safe fix never changes what a reader sees: on every corpus file and every XDD, all safe fixes applied,
 python-canopen (with and without a node-ID) reads every entry as before, lely's dcfchk accepts what it accepted,
 and cantools-od reads the same model; [DeviceInfo] changes only to a DCF's 1018h ParameterValue (see
-tests/fixsafety.py). The README's fix-safety table says which fixes `--fix` applies and which only
+tests/fixsafety.py). The fix-safety table of docs/commands/lint.md says which fixes `--fix` applies and which only
 `--unsafe-fixes`: it matches what the fixes show on the rule examples and the corpus."""
 
 from __future__ import annotations
@@ -54,8 +54,9 @@ def test_no_safe_fix_changes_what_a_peer_reads(judged: tuple[list[Change], set[t
 
 
 def _table() -> dict[str, set[bool]]:
-    """The README's fix-safety table: code -> the safeties its rows give (`--fix`: True, `--unsafe-fixes`: False)."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    """The fix-safety table of lint's page: code -> the safeties its rows give (`--fix`: True, `--unsafe-fixes`:
+    False)."""
+    text = (ROOT / "docs" / "commands" / "lint.md").read_text(encoding="utf-8")
     block = text[text.index("| Code | Fix | Applied by |") :].split("\n\n", 1)[0]
     table: dict[str, set[bool]] = {}
     for row in block.splitlines()[2:]:
@@ -83,10 +84,12 @@ def _example_safeties() -> set[tuple[str, bool]]:
     return found
 
 
-def test_readme_fix_table_matches_the_fixes(judged: tuple[list[Change], set[tuple[str, bool]], int]) -> None:
+def test_documented_fix_table_matches_the_fixes(judged: tuple[list[Change], set[tuple[str, bool]], int]) -> None:
     table = _table()
     shown = judged[1] | _example_safeties()
     missing = sorted(f"{code} {'safe' if ok else 'unsafe'}" for code, ok in shown if ok not in table.get(code, ()))
-    assert missing == [], "fixes the README's fix-safety table does not list"
+    assert missing == [], "fixes the fix-safety table of docs/commands/lint.md does not list"
     unseen = sorted(code for code in table if not any(seen_code == code for seen_code, _ in shown))
-    assert unseen == [], "codes in the README's fix-safety table whose fix no example or corpus file shows"
+    assert unseen == [], (
+        "codes in the fix-safety table of docs/commands/lint.md whose fix no example or corpus file shows"
+    )

@@ -1,9 +1,10 @@
-"""The README's editor snippets, run as written in the real editors against `cantools-od lsp`.
+"""The editor snippets of docs/editors.md (the README shows one of them), run as written in the real editors
+against `cantools-od lsp`.
 
-Each test makes an example EDS with two errors, opens it in the editor configured only by the README's
+Each test makes an example EDS with two errors, opens it in the editor configured only by the documented
 snippet, waits for the diagnostics the editor shows, then repairs one line in the editor's buffer and
 waits for the diagnostics to follow. What the editor shows must be what `lint` reports for the same
-texts. The VS Code one builds the client by the README's line and opens a corpus file in code-server
+texts. The VS Code one builds the client by the documented line and opens a corpus file in code-server
 driven through headless Chromium. A test skips, saying why, when its editor is not installed."""
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ import pytest
 
 from support import EXAMPLES, ROOT, cli_command, corpus_file
 
+EDITORS = ROOT / "docs" / "editors.md"
 WAIT = 60  # seconds an editor has for its work (the probes give up sooner)
 _PROBE_LUA = r"""
 local out = vim.env.PROBE_OUT
@@ -82,9 +84,9 @@ _PROBE_EL = r"""
 
 
 def _snippets(language: str, after: str) -> list[str]:
-    """The README's ```language blocks in the part that starts with `after`, in order."""
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    part = readme[readme.index(after) :]
+    """The ```language blocks of docs/editors.md in the part that starts with `after`, in order."""
+    page = EDITORS.read_text(encoding="utf-8")
+    part = page[page.index(after) :]
     part = part[: part.index("\n**", 1)] if "\n**" in part[1:] else part
     return re.findall(rf"```{language}\n(.*?)```", part, re.DOTALL)
 
@@ -136,7 +138,7 @@ def test_the_neovim_snippet_shows_lint_findings_and_follows_an_edit(tmp_path: Pa
         pytest.skip("Neovim (nvim) is not installed on this machine")
     version = _nvim_version(nvim)
     if version < (0, 7):
-        pytest.skip(f"Neovim {version[0]}.{version[1]} predates every snippet in the README (0.7 or newer)")
+        pytest.skip(f"Neovim {version[0]}.{version[1]} predates every documented snippet (0.7 or newer)")
     modern, older = _snippets("lua", "**Neovim**")
     path, line, text, first, after = _case(tmp_path)
     (tmp_path / "init.lua").write_text(modern if version >= (0, 8) else older, encoding="utf-8")
@@ -167,7 +169,7 @@ def test_the_neovim_snippet_leaves_other_xml_files_alone(tmp_path: Path) -> None
         pytest.skip("Neovim (nvim) is not installed on this machine")
     version = _nvim_version(nvim)
     if version < (0, 7):
-        pytest.skip(f"Neovim {version[0]}.{version[1]} predates every snippet in the README (0.7 or newer)")
+        pytest.skip(f"Neovim {version[0]}.{version[1]} predates every documented snippet (0.7 or newer)")
     modern, older = _snippets("lua", "**Neovim**")
     (tmp_path / "init.lua").write_text(modern if version >= (0, 8) else older, encoding="utf-8")
     (tmp_path / "probe.lua").write_text(_POM_LUA, encoding="utf-8")
@@ -179,12 +181,21 @@ def test_the_neovim_snippet_leaves_other_xml_files_alone(tmp_path: Path) -> None
     assert out.read_text(encoding="utf-8") == "0"
 
 
+def test_the_readme_shows_a_snippet_these_tests_run() -> None:
+    """The README's editor example is one of docs/editors.md's snippets, word for word, so the tests here run it."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    part = readme[readme.index("## In the editor") :]
+    shown = re.findall(r"```(lua|elisp|toml)\n(.*?)```", part[: part.index("\n## ", 1)], re.DOTALL)
+    assert shown, "the README shows no editor snippet"
+    page = EDITORS.read_text(encoding="utf-8")
+    assert all(f"```{language}\n{snippet}```" in page for language, snippet in shown), shown
+
+
 def test_the_vscode_build_line_runs_where_npx_cannot_ask() -> None:
     """Outside a terminal (a task, a script, CI) npx cannot ask whether to fetch vsce, and stops: the
-    README's line says yes beforehand."""
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    found = re.search(r"\*\*VS Code\*\*.*?Build and install it with `([^`]+)`", readme, re.DOTALL)
-    assert found is not None, "the README has no build line for VS Code"
+    documented line says yes beforehand."""
+    found = re.search(r"\*\*VS Code\*\*.*?Build and install it with `([^`]+)`", EDITORS.read_text("utf-8"), re.DOTALL)
+    assert found is not None, "docs/editors.md has no build line for VS Code"
     calls = re.findall(r"npx(?: +(\S+))?", found.group(1))
     assert calls and all(flag in ("--yes", "-y") for flag in calls), found.group(1)
 
@@ -346,11 +357,10 @@ def _vscode_tools(tmp_path: Path) -> tuple[str, str] | str:
     return code_server, chromium
 
 
-def _readme_build(tmp_path: Path) -> Path:
-    """The README's build line for the VS Code client, run as written in a copy of editors/vscode: the VSIX."""
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    found = re.search(r"\*\*VS Code\*\*.*?Build and install it with `([^`]+)`", readme, re.DOTALL)
-    assert found is not None, "the README has no build line for VS Code"
+def _documented_build(tmp_path: Path) -> Path:
+    """The documented build line for the VS Code client, run as written in a copy of editors/vscode: the VSIX."""
+    found = re.search(r"\*\*VS Code\*\*.*?Build and install it with `([^`]+)`", EDITORS.read_text("utf-8"), re.DOTALL)
+    assert found is not None, "docs/editors.md has no build line for VS Code"
     shutil.copytree(ROOT / "editors" / "vscode", tmp_path / "editors" / "vscode",
                     ignore=shutil.ignore_patterns("node_modules", "out", "*.vsix"))  # fmt: skip
     # On a terminal, as a user types it, pressing Enter at every question (vsce's "[y/N]" then means no);
@@ -432,8 +442,8 @@ def _stop(server: subprocess.Popen[bytes]) -> None:
     server.wait(timeout=WAIT)
 
 
-def test_the_vscode_client_built_as_the_readme_says_shows_lint_findings_in_code_server(tmp_path: Path) -> None:
-    """The README's VS Code build line, its VSIX installed into code-server (VS Code OSS), a real corpus file
+def test_the_vscode_client_built_as_documented_shows_lint_findings_in_code_server(tmp_path: Path) -> None:
+    """The documented VS Code build line, its VSIX installed into code-server (VS Code OSS), a real corpus file
     opened from the explorer in headless Chromium (driven by playwright-core through vscode_probe.js): the
     Problems panel shows lint's findings, follows a one-line edit, and a mapping entry's hover names the
     object it maps. Runs when code-server (CODE_SERVER or PATH; it needs the Node it was built for first
@@ -458,7 +468,7 @@ def test_the_vscode_client_built_as_the_readme_says_shows_lint_findings_in_code_
     repaired.write_text("\n".join([*lines[: line - 1], text, *lines[line:]]) + "\n", "utf-8")
     first, after = _lint(path, 0), _lint(repaired, 0)  # warnings and infos only
     assert after < first, "the edit must change lint's findings"
-    server, url = _code_server(code_server, tmp_path, _readme_build(tmp_path), folder)
+    server, url = _code_server(code_server, tmp_path, _documented_build(tmp_path), folder)
     out = tmp_path / "seen.json"
     probe = {"PROBE_URL": url, "PROBE_FILE": path.name, "PROBE_LINE": str(line), "PROBE_TEXT": text,
              "PROBE_HOVER_LINE": str(mapping), "PROBE_HOVER": lines[mapping - 1].split("=")[1], "PROBE_OUT": str(out),

@@ -33,6 +33,7 @@ class Finding:
     code: str
     line: int
     message: str
+    severity: str
 
 
 def shared_keys() -> list[str]:
@@ -78,17 +79,16 @@ def _lint(paths: list[Path], options: list[str]) -> list[dict[str, object]]:
     return found
 
 
-def _errors(found: list[dict[str, object]], key_of: dict[str, str]) -> list[Finding]:
+def _findings(found: list[dict[str, object]], key_of: dict[str, str]) -> list[Finding]:
     return [
-        Finding(key_of[str(f["file"])], str(f["code"]), int(str(f["line"])), str(f["message"]))
+        Finding(key_of[str(f["file"])], str(f["code"]), int(str(f["line"])), str(f["message"]), str(f["severity"]))
         for f in found
-        if f["severity"] == "error"
     ]
 
 
-def errors(keys: Iterable[str], scratch: Path) -> list[Finding]:
-    """Every error `lint` reports on the files `keys` name: one CLI call for the plain files of ../shared, one for
-    its CANopenNode files and one per snapshot project (its own stack configuration); snapshots are written
+def findings(keys: Iterable[str], scratch: Path) -> list[Finding]:
+    """Every finding `lint` reports on the files `keys` name: one CLI call for the plain files of ../shared, one
+    for its CANopenNode files and one per snapshot project (its own stack configuration); snapshots are written
     under `scratch`."""
     plain: list[Path] = []
     editor: list[Path] = []
@@ -103,12 +103,17 @@ def errors(keys: Iterable[str], scratch: Path) -> list[Finding]:
     found: list[Finding] = []
     for batch, options in ((plain, []), (editor, ["--profile", "canopennode"])):
         if batch:
-            found += _errors(_lint(batch, options), {str(p): p.relative_to(SHARED).as_posix() for p in batch})
+            found += _findings(_lint(batch, options), {str(p): p.relative_to(SHARED).as_posix() for p in batch})
     for project in projects:
         source, headers = _place_project(project, scratch)
         options = ["--profile", "canopennode", *(f"--stack-config={h}" for h in headers)]
-        found += _errors(_lint([source], options), {str(source): mirror_key(project)})
+        found += _findings(_lint([source], options), {str(source): mirror_key(project)})
     return sorted(found, key=lambda f: (f.key, f.line, f.code, f.message))
+
+
+def errors(keys: Iterable[str], scratch: Path) -> list[Finding]:
+    """The findings of `findings` that are errors."""
+    return [f for f in findings(keys, scratch) if f.severity == "error"]
 
 
 def read_lines(key: str) -> list[str]:

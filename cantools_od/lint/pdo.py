@@ -536,19 +536,22 @@ def check_dummy_usage(ctx: Context) -> Iterator[Finding]:
     """
 A dummy entry tells a receiver which bits to skip; CiA 301 provides no dummy mapping for a
 TPDO, which would have to invent the data. Some devices send zeros, but portable files do not
-rely on it.
-
-A CANopenNode device (checked with `--profile canopennode`, or a file CANopenEditor wrote) is one
-of them: the stack sends zeros in a TPDO's dummy entry (CO_PDO.c), so nothing is reported for it.""",
+rely on it. The CANopenNode stack is one of them (CO_PDO.c maps the dummy to a zero byte): on a
+device built with it (the canopennode profile, or a file CANopenEditor wrote) the finding is a
+warning.""",
     lambda: ex.pdo("tx", "0x00050008", "0x60410010") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
 )
 def check_dummy_in_tpdo(ctx: Context) -> Iterator[Finding]:
-    if ctx.for_canopennode:
-        return
     for pdo, entry in dummies(ctx):
-        if pdo.direction == TX:
-            yield ctx.report("PDO051", f"{pdo.name}: dummy entry 0x{entry.raw:08X} in a TPDO", entry.slot.location(ctx))
+        if pdo.direction != TX:
+            continue
+        message = f"{pdo.name}: dummy entry 0x{entry.raw:08X} in a TPDO"
+        if not ctx.for_canopennode:
+            yield ctx.report("PDO051", message, entry.slot.location(ctx))
+            continue
+        message += "; the CANopenNode stack sends zeros for it, other stacks may refuse the mapping"
+        yield with_severity(ctx.report("PDO051", message, entry.slot.location(ctx)), W)
 
 
 @rule(

@@ -289,13 +289,15 @@ PADDED = SHARED / "eds-history" / "Apach200__0_F407__2" / "new.xdd"
 
 
 def test_a_dummy_in_a_canopennode_tpdo_is_sent_as_zeros_not_an_error(tmp_path: Path) -> None:
-    # CANopenNode maps a TPDO's dummy entry to a reader that sends zeros (301/CO_PDO.c, OD_read_dummy)
-    assert [f for f in _lint(_need(PADDED)) if f["code"] == "PDO051"] == []
+    # CANopenNode maps a TPDO's dummy entry to a reader that sends zeros (301/CO_PDO.c, OD_read_dummy): a
+    # portability warning, since other stacks may refuse the mapping
+    found = [f["severity"] for f in _lint(_need(PADDED)) if f["code"] == "PDO051"]
+    assert found and set(found) == {"warning"}
     # the same mapping in an EDS: with the canopennode profile the device is CANopenNode's, without it no stack
     # is named and CiA 301 has no dummy mapping for a TPDO
     plain = tmp_path / "padded.eds"
     plain.write_text(eds(comm(0x1801, "$NODEID+0x280"), mapping(0x1A01, "0x60000108", "0x00020008")))
-    assert [f["code"] for f in _lint(plain, "--profile", "canopennode") if f["code"] == "PDO051"] == []
+    assert [f["severity"] for f in _lint(plain, "--profile", "canopennode") if f["code"] == "PDO051"] == ["warning"]
     assert [(f["line"], f["message"]) for f in _lint(plain) if f["code"] == "PDO051"] == [
         (where(plain.read_text(), "1A01sub2", "DefaultValue"), "TPDO2: dummy entry 0x00020008 in a TPDO")
     ]

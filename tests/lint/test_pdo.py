@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -13,7 +15,7 @@ from cantools_od import load as load_file
 from cantools_od.lint import LintOptions, lint
 from cantools_od.model import Severity
 
-from support import EXAMPLES, corpus_params
+from support import EXAMPLES, cli_command, corpus_params
 
 STATUS = var(0x6041, "Statusword", 0x0006, "ro")
 CONTROL = var(0x6040, "Controlword", 0x0006, "rw")
@@ -300,6 +302,31 @@ def test_pdo051_dummy_in_tpdo() -> None:
     assert found.message == "TPDO1: dummy entry 0x00050008 in a TPDO"
     assert at(found) == value_at(text, "1A00sub1")
     assert findings(eds(*rpdo("0x00050008")), "PDO051") == []
+
+
+def test_pdo051_on_a_canopennode_device_is_a_warning(tmp_path: Path) -> None:
+    """Apach200/0_F407's CANopenEditor project (DS301_profile.xdd) maps a dummy 0x00020008 into TPDO2: the
+    CANopenNode stack sends a zero byte for it (CO_PDO.c), so such a device does not misbehave; elsewhere the
+    mapping may be refused and it stays an error."""
+    plain = eds(*tpdo("0x00020008", "0x60410010"), STATUS)
+    editor = plain.replace("ObjectType=", ";StorageLocation=RAM\nObjectType=")
+    seen: dict[str, tuple[str, int, str]] = {}
+    for name, text, options in (("plain", plain, []), ("profile", plain, ["--profile", "canopennode"]),
+                                ("editor", editor, [])):  # fmt: skip
+        path = tmp_path / f"{name}.eds"
+        path.write_text(text, encoding="utf-8")
+        done = subprocess.run([*cli_command(), "lint", "-j1", "--format", "json", "--select", "PDO051", *options,
+                               str(path)], capture_output=True, text=True, check=False)  # fmt: skip
+        (found,) = json.loads(done.stdout)
+        seen[name] = (found["severity"], found["line"], found["message"])
+    line = where(plain, "1A00sub1", "DefaultValue")
+    assert seen["plain"] == ("error", line, "TPDO1: dummy entry 0x00020008 in a TPDO")
+    stack = (
+        "TPDO1: dummy entry 0x00020008 in a TPDO; the CANopenNode stack sends zeros for it, other stacks may refuse "
+        "the mapping"
+    )
+    assert seen["profile"] == ("warning", line, stack)
+    assert seen["editor"][0] == "warning" and seen["editor"][2] == stack
 
 
 def test_pdo053_length_msb() -> None:

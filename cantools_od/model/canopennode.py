@@ -235,9 +235,22 @@ CONFIG_ENTRIES = (
 CONFIG_ARRAYS = (CONSUMER_HEARTBEAT, ERROR_HISTORY)
 
 
+# The objects CO_CANopenInit reads through CO_config_t: the entries it names, and the SDO, PDO and SRDO objects
+# it walks from the first one of each kind. OD_get_value fails on an entry without memory, and so does the init.
+_READ_AT_INIT = frozenset(
+    {*CONFIG_ENTRIES, *SDO_SERVERS, *SDO_CLIENTS, *RPDO_COMM, *TPDO_COMM, *SRDO_COMM,
+     *(index + MAP_BASE[RX] - COMM_BASE[RX] for index in RPDO_COMM),
+     *(index + MAP_BASE[TX] - COMM_BASE[TX] for index in TPDO_COMM),
+     *(index + SRDO_MAP_OFFSET for index in SRDO_COMM)}
+) - _STACK_EXTENDED  # fmt: skip
+
+
 def stack_reads_at_init(index: int) -> bool:
-    """Whether CO_CANopenInit reads the object's value from the OD: it then needs memory even without a default."""
-    return index in COMMUNICATION_AREA and index not in _STACK_EXTENDED
+    """Whether CO_CANopenInit reads the object's value from the OD: it then needs memory even without a default.
+
+    Other communication objects (1000h, 1018h, 1029h, the program download objects 1F51h-1F57h...) the stack
+    never reads; the application serves them, and without a default they get no memory, as in CANopenEditor."""
+    return index in _READ_AT_INIT
 
 
 # --- the stack's build configuration (301/CO_config.h) ---------------------------------------

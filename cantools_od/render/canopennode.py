@@ -177,7 +177,7 @@ class _Builder:
         stored: list[Stored] = []
         if sub0.stored:
             stored.append(Stored("uint8_t", f"{name}_sub0", "", initializer(sub0)))
-        held = any(e.stored for e in elements)
+        held = first.stored  # the view gives all elements memory or none
         if held:
             inits = [initializer(replace(e, data_type=first.data_type)) for e in elements]
             stored.append(Stored(c, name, f"[{self.p}_CNT_ARR_{obj.index:04X}]{dims}", "{" + ", ".join(inits) + "}"))

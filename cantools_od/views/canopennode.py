@@ -18,9 +18,9 @@ inference below, which `inferences` lists one line each:
 
 Values follow the stack's conventions: `$NODEID+n` is stored as n (the stack adds the node-ID
 to the COB-IDs it manages at run time); an entry without a default gets no memory (`dataOrig`
-NULL, for the application to provide through `OD_extension_init`), as does a DOMAIN, except in
-the communication area 1000h-1FFFh, which CO_CANopenInit reads (0 then; 1003h, 1010h and 1011h,
-which the stack extends itself, keep no memory as in CANopenEditor); strings
+NULL, for the application to provide through `OD_extension_init`), as does a DOMAIN, except the
+objects CO_CANopenInit reads (`stack_reads_at_init`: 0 then); an ARRAY's elements have memory all
+or none, as its first element decides (CANopenEditor's exporter); strings
 reserve max(default length, `string_length_min`) bytes, VISIBLE_STRING one more for the
 terminator; 24/40/48/56-bit integers and TIME types are byte arrays in CANopen byte order.
 """
@@ -33,7 +33,7 @@ import struct
 import sys
 import unicodedata
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from ..identifiers import RESERVED
 from ..model import (
@@ -318,6 +318,19 @@ class _Builder:
                 return real
         return value
 
+    def one_array(self, obj: Object, entries: tuple[NodeEntry, ...]) -> tuple[NodeEntry, ...]:
+        """An ARRAY's elements are one C array: all have memory or none, as the first element decides (CANopenEditor
+        reads the first element's default for the whole array). Elements that disagree are 0, or lose their default."""
+        sub0, elements = entries[0], entries[1:]
+        stored = bool(elements) and elements[0].stored
+        for e in elements[1:]:
+            if e.stored != stored:
+                where = f"{obj.index:04X}sub{e.subindex:X}"
+                self.note(where, "no default value: 0, as the ARRAY's first element has one" if stored else
+                                 "default ignored: the ARRAY's first element has none, so the ARRAY has no memory "
+                                 "(OD_extension_init), as in CANopenEditor")  # fmt: skip
+        return (sub0, *(e if e.stored == stored else replace(e, stored=stored) for e in elements))
+
     def settings(self, obj: Object) -> tuple[str, str | None]:
         info = obj.canopennode or CanopenNodeInfo.model_construct()
         where = f"{obj.index:04X}h"
@@ -346,6 +359,8 @@ class _Builder:
                 lengths = [self.entry(obj, n, v, "").length for n, v in subs[1:]]
                 length = max(lengths, default=0)
             entries = tuple(self.entry(obj, n, v, members[n], length if n > 0 else None) for n, v in subs if n >= 0)
+            if kind == ARR:
+                entries = self.one_array(obj, entries)
         return NodeObject(obj.index, obj.name, c_name(obj.name) or "object", kind, group, label, entries)
 
 

@@ -28,13 +28,30 @@ terminator; 24/40/48/56-bit integers and TIME types are byte arrays in CANopen b
 from __future__ import annotations
 
 import functools
-import re
 import struct
-import sys
-import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
+from ..canopennode.editor import (
+    c_name,
+    editor_entry_type,
+    editor_integer,
+    editor_octets,
+    editor_pdo_word,
+    editor_real,
+    pdo_bits_pair,
+    pdo_directions,
+    sdo_directions,
+)
+from ..canopennode.profile import (
+    RAM,
+    SRDO_DIRECTIONS,
+    count_label_for,
+    count_macro,
+    pdo_attribute_text,
+    stack_reads_at_init,
+    standard_storage_group,
+)
 from ..identifiers import RESERVED
 from ..model import (
     CanopenNodeInfo,
@@ -50,25 +67,10 @@ from ..model import (
     ValueKind,
     Variable,
 )
-from ..model.canopennode import (
-    RAM,
-    count_label_for,
-    editor_entry_type,
-    editor_integer,
-    editor_octets,
-    editor_pdo_word,
-    editor_real,
-    pdo_bits_pair,
-    pdo_directions,
-    sdo_directions,
-    stack_reads_at_init,
-    standard_storage_group,
-)
 from ..model.datatypes import DOMAIN
 
 VAR, ARR, REC = "VAR", "ARR", "REC"
 _KINDS = {ObjectKind.VAR: VAR, ObjectKind.DOMAIN: VAR, ObjectKind.ARRAY: ARR, ObjectKind.RECORD: REC}
-_WORD = re.compile(r"[A-Za-z0-9_]+")
 
 
 @dataclass(frozen=True, slots=True)
@@ -158,33 +160,6 @@ class NodeView:
 # --- names -----------------------------------------------------------------------------------
 
 
-def c_name(name: str) -> str:
-    """CANopenEditor's spelling of a display name (v4.1 and later): camelCase words, '-' as '_', '_'
-    between capitals, '_' before a leading digit.
-
-    "COB-ID SYNC message" → COB_ID_SYNCMessage, "Highest sub-index supported" →
-    highestSub_indexSupported, "Variable NV Int32" → variableNV_Int32, "Trigger input x8" →
-    triggerInputX8. Application code written
-    against CANopenEditor's OD.h (OD_PERSIST_COMM.x1018_identity.vendor_ID) keeps compiling.
-    """
-    folded = unicodedata.normalize("NFKD", name).encode("ascii", "ignore").decode("ascii")
-    out, last = "", ""
-    for word in _WORD.findall(folded.replace("-", "_")):
-        if last.isupper() and word[0].isupper():
-            out += "_"
-        last = word[-1]
-        if len(word) > 1 and word[0].isalpha():
-            word = word[0].upper() + word[1:]
-        out += word
-    if out[:1].isdigit():
-        out = "_" + out
-    elif len(out) > 1 and out[0].isalpha() and out[1].islower():
-        out = out[0].lower() + out[1:]
-    elif len(out) == 1:
-        out = out.lower()
-    return sys.intern(out)  # members repeat from object to object (sub1, highestSub_indexSupported)
-
-
 def _member_names(subs: Sequence[tuple[int, Variable]]) -> dict[int, str]:
     names: dict[int, str] = {}
     taken: set[str] = set()
@@ -244,7 +219,7 @@ def _attributes(dtype: DataType, var: Variable, info: CanopenNodeInfo | None) ->
     access = var.access
     sdo = sdo_directions(access.value if access else None)
     pdo = pdo_directions(var.pdo_mapping_kind(), access.value if access else None)
-    srdo = {"tx": "T", "rx": "R", "trx": "TR"}.get(info.access_srdo.value if info and info.access_srdo else "", "")
+    srdo = SRDO_DIRECTIONS.get(info.access_srdo.value if info and info.access_srdo else "", "")
     multibyte = dtype.is_numeric and dtype.bits in (16, 32, 64)
     return _shared_attributes(sdo, pdo, srdo, multibyte, dtype.kind in (ValueKind.STRING, ValueKind.UNICODE))
 
@@ -343,7 +318,7 @@ class _Builder:
             self.note(where, f"storage group {group} inferred from the index")
         label = count_label_for(obj.index, obj.canopennode)
         if info.count_label is None and label is not None:
-            self.note(where, f"count label {label} inferred from the index (OD_CNT_{label})")
+            self.note(where, f"count label {label} inferred from the index ({count_macro(label)})")
         return group, label
 
     def build(self, obj: Object) -> NodeObject:
@@ -373,12 +348,9 @@ def keep_editor_pdo_bits(device: Device) -> list[str]:
             if ours != its:
                 var.state_pdo_mapping(editor_pdo_word(var.stated_pdo_mapping, var.pdo_mapping))
                 where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
-                lines.append(f"{where}: {_bits(its)} as CANopenEditor writes it, not {_bits(ours)} (pdo_attributes)")
+                text = f"{pdo_attribute_text(its)} as CANopenEditor writes it, not {pdo_attribute_text(ours)}"
+                lines.append(f"{where}: {text} (pdo_attributes)")
     return lines
-
-
-def _bits(directions: str) -> str:
-    return f"ODA_{directions}PDO" if directions else "no PDO bit"
 
 
 def generated_objects(device: Device) -> list[Object]:

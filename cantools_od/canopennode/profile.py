@@ -7,6 +7,9 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
+from ..model.cia301.cobid import BASE_11BIT, EXTENDED
+from ..model.cia301.connections import predefined_cob_base
+
 # model/cia301/objects.py imports nothing: model/objects.py, which takes CanopenNodeInfo from here, meets no cycle.
 from ..model.cia301.objects import (
     COB_ID_EMCY,
@@ -149,6 +152,16 @@ CONSECUTIVE: dict[str, tuple[int, int | None]] = {
 # COB-IDs to which the stack adds the node-ID itself: only there is `$NODEID+n` stored as n harmlessly.
 _NODEID_AREAS = (_one(COB_ID_EMCY), range(SDO_SERVERS[0], SDO_CLIENTS[-1] + 1), RPDO_COMM, TPDO_COMM)
 NODEID_AREAS: tuple[tuple[int, int], ...] = tuple((area[0], area[-1]) for area in _NODEID_AREAS)
+
+
+def stack_adds_node_id(index: int, subindex: int, value: int) -> bool:
+    """Whether the CANopenNode stack reads a stored COB-ID as its pre-defined base + the node-ID, where other
+    tools read it literally: a PDO 1-4 or EMCY COB-ID whose CAN-ID is the base itself (CO_PDO.c and
+    CO_Emergency.c add the node-ID to a "default CAN-ID stored without node-ID"), or the first SDO server's,
+    whose CAN-IDs the stack always makes 600h/580h + node-ID (CO_SDOserver.c)."""
+    base = predefined_cob_base(index, subindex)
+    return base is not None and (value & BASE_11BIT) == base and not value & EXTENDED
+
 
 # Communication objects the stack extends with its own read/write functions (EM history, storage):
 # like CANopenEditor, an entry of theirs without a default gets no memory.

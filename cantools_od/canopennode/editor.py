@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 import sys
 import unicodedata
+from collections.abc import Sequence
 from enum import StrEnum
 from typing import Any, Protocol
 
@@ -135,6 +136,19 @@ def editor_entry_type(device: Types, var: Typed, obj: Owner) -> DataType | None:
     if dtype is None and var is not obj and obj.kind == 0x8 and not var.data_type:
         return obj.dtype
     return dtype
+
+
+def entry_has_memory(length: int, has_value: bool, textual: bool) -> bool:
+    """CANopenEditor's storage rule for one entry (Get_dataProperties, Prepare_var, Prepare_rec): memory where it
+    has a value, or where it is a string or octet string of some capacity (`CO_stringLengthMin`); a DOMAIN, of
+    length 0, never. Without memory `dataOrig` is NULL and the application serves the entry (OD_extension_init)."""
+    return length > 0 and (has_value or textual)
+
+
+def array_has_memory(elements: Sequence[bool]) -> bool:
+    """CANopenEditor's storage rule for an ARRAY's elements (Prepare_arr): one C array, which exists when the first
+    element has memory by `entry_has_memory`, whatever the others say. Sub-index 0 is judged on its own."""
+    return bool(elements) and elements[0]
 
 
 # --- names --------------------------------------------------------------------------------------

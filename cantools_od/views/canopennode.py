@@ -33,12 +33,14 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from ..canopennode.editor import (
+    array_has_memory,
     c_name,
     editor_entry_type,
     editor_integer,
     editor_octets,
     editor_pdo_word,
     editor_real,
+    entry_has_memory,
     pdo_bits_pair,
     pdo_directions,
     sdo_directions,
@@ -262,7 +264,7 @@ class _Builder:
         if held is None and size > 0 and not textual and stack_reads_at_init(obj.index):
             held = bytes(size)
             self.note(where, "no default value: 0, as CO_CANopenInit reads it from the OD")
-        stored = size > 0 and (held is not None or textual)
+        stored = entry_has_memory(size, held is not None, textual)
         if not stored and dtype.index != DOMAIN.index:
             self.note(where, "no default value: no memory in the OD, the application provides it (OD_extension_init)")
         default = held if held is not None else bytes(size)
@@ -297,7 +299,7 @@ class _Builder:
         """An ARRAY's elements are one C array: all have memory or none, as the first element decides (CANopenEditor
         reads the first element's default for the whole array). Elements that disagree are 0, or lose their default."""
         sub0, elements = entries[0], entries[1:]
-        stored = bool(elements) and elements[0].stored
+        stored = array_has_memory([e.stored for e in elements])
         for e in elements[1:]:
             if e.stored != stored:
                 where = f"{obj.index:04X}sub{e.subindex:X}"

@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
 import test_full_stack
 from cnokit import gen, stack, walk
 
@@ -106,3 +107,20 @@ def test_the_first_element_decides_an_arrays_memory(tmp_path: Path) -> None:
     assert [seen[0x2001].subs[n].data for n in (1, 2, 3)] == [b"\x07\0", b"\0\0", b"\x09\0"]
     assert "2000sub2: default ignored: the ARRAY's first element has none" in result.stderr
     assert "2001sub2: no default value: 0, as the ARRAY's first element has one" in result.stderr
+
+
+def test_an_object_the_init_reads_needs_memory_where_canopeneditor_gives_none(tmp_path: Path) -> None:
+    """Why we differ on purpose: 1016h without defaults gets `.dataOrig = NULL` from CANopenEditor (Prepare_arr), and
+    then CO_HBconsumer_init's OD_get_u32 answers ODR_SUB_NOT_EXIST and CO_CANopenInit fails on 1016h. Ours, with
+    zeroed memory, runs (the first test); the same OD with CANopenEditor's NULL does not."""
+    stack()
+    undefault = tuple(f"1016sub{n}" for n in range(1, 5))
+    (tmp_path / "device.eds").write_text(blank_device_with({}, undefault), encoding="utf-8")
+    assert gen(tmp_path / "device.eds", tmp_path / "od").returncode == 0
+    source = tmp_path / "od" / "OD.c"
+    ours = source.read_text(encoding="utf-8")
+    theirs = re.sub(r"(\.dataOrig = )&OD_\w+\.x1016_consumerHeartbeatTime\[0\]", r"\1NULL", ours)
+    assert theirs != ours
+    source.write_text(theirs, encoding="utf-8")
+    with pytest.raises(AssertionError, match=r"CO_CANopenInit: -\d+, OD entry 0x1016"):
+        test_full_stack.build_and_run(tmp_path / "od", tmp_path / "run")

@@ -20,9 +20,9 @@ PACKAGE = ROOT / "cantools_od"
 # Lowest first. A module may import its own layer's modules and those of lower layers. The package itself
 # (cantools_od/__init__.py, lazy re-exports and __version__) stands outside the order: anyone may read the version.
 LAYERS: tuple[tuple[str, ...], ...] = (
-    ("model", "names", "resources", "collector", "files"),
+    ("model", "canopennode", "names", "resources", "collector", "files"),
     ("sniff", "eds", "xdd", "tableimport", "schema", "api"),
-    ("identifiers", "interop", "losses", "canopennode_overrides", "views"),
+    ("identifiers", "interop", "losses", "views"),
     ("lint", "changes", "network", "live"),
     ("render",),
     ("lsp",),

@@ -41,7 +41,7 @@ ALLOWED_NUMBERS = {
 }
 
 
-def _example_calls(tree: ast.AST) -> set[int]:
+def example_calls(tree: ast.AST) -> set[int]:
     """ids of constants inside calls of the rule-example builder (`ex.record(0x1A00, ...)`)."""
     inside: set[int] = set()
     for node in ast.walk(tree):
@@ -56,7 +56,7 @@ def misplaced(relative: str, source: str) -> list[str]:
     if relative.startswith(CIA301_HOME) or relative in ALLOWED:
         return []
     tree = ast.parse(source)
-    examples = _example_calls(tree)
+    examples = example_calls(tree)
     found = []
     for node in ast.walk(tree):
         if not isinstance(node, ast.Constant) or type(node.value) is not int or id(node) in examples:

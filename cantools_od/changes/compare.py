@@ -7,7 +7,8 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from operator import attrgetter
 
-from ..eds.storage import PREFIX as STORAGE_PREFIX
+from ..canopennode.info import DISABLED_PROPERTY
+from ..canopennode.info import STORAGE_LOCATION_PREFIX as STORAGE_PREFIX
 from ..identifiers import Identifiers
 from ..model import (
     CanopenNodeInfo,
@@ -147,7 +148,9 @@ def _named(change: Change, old: Object | None, new: Object | None) -> Change:
 
 def _summary(device: Device, var: Variable, owner: Object) -> str:
     disabled = (
-        ", disabled (CO_disabled: not in the generated OD)" if var.canopennode and var.canopennode.disabled else ""
+        f", disabled ({DISABLED_PROPERTY}: not in the generated OD)"
+        if var.canopennode and var.canopennode.disabled
+        else ""
     )
     if var is owner and owner.has_subs:
         count = len(owner.subs)

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 
+from ..canopennode.info import DISABLED_PROPERTY
+from ..canopennode.profile import COUNT_PREFIX
 from ..model import AccessType, DataType, NodeIdExpr, RawValue, Value, ValueKind
 from ..model.cia301.objects import (
     COB_ID_EMCY,
@@ -196,10 +198,10 @@ def canopennode_impact(field: str, old: object, new: object) -> tuple[Impact, st
         if bool(old) == bool(new):
             return Impact.COSMETIC, "unset reads as enabled"
         if new:
-            return Impact.BREAKING, "disabled (CO_disabled): the OD loses it, and the bus with it"
-        return Impact.COMPATIBLE, "enabled (CO_disabled no longer set): the OD gains it"
+            return Impact.BREAKING, f"disabled ({DISABLED_PROPERTY}): the OD loses it, and the bus with it"
+        return Impact.COMPATIBLE, f"enabled ({DISABLED_PROPERTY} no longer set): the OD gains it"
     if field in ("storage_group", "count_label") and old is not None and new is not None:
-        what = "storage group" if field == "storage_group" else "OD_CNT_ count"
+        what = "storage group" if field == "storage_group" else f"{COUNT_PREFIX} count"
         return Impact.BREAKING, f"generated code and the stored layout change ({what})"
     if old is None or new is None:
         return Impact.VALUE, "stated on one side only"

@@ -6,14 +6,16 @@ import sys
 
 import click
 
+from ..canopennode.editor import editor_entry_type, editor_reads
+from ..canopennode.overrides import STACK_TABLE, SUFFIX, apply_overrides, override_file_for, read_settings, stack_config
+from ..canopennode.profile import SWITCH_PREFIX, StackConfig
 from ..model import Device, RawValue, Severity
-from ..model.canopennode import StackConfig
 from .common import EXIT_FINDINGS, EXIT_USAGE
 
 stack_config_option = click.option(
     "--stack-config", "stack_files", multiple=True, type=click.Path(dir_okay=False),
-    help="The project's CO_driver_target.h (or 301/CO_config.h): its CO_CONFIG_* decide the objects the "
-    "CANopenNode stack needs (repeatable; the first definition wins; a [stack] table in the .canopennode.toml wins).",
+    help=f"The project's CO_driver_target.h (or 301/CO_config.h): its {SWITCH_PREFIX}* decide the objects the "
+    f"CANopenNode stack needs (repeatable; the first definition wins; a [{STACK_TABLE}] table in the {SUFFIX} wins).",
 )  # fmt: skip
 
 
@@ -22,8 +24,6 @@ def load_stack_config(file: str, stack_files: tuple[str, ...]) -> StackConfig:
 
     Exits 2 when one of them cannot be read.
     """
-    from ..canopennode_overrides import STACK_TABLE, override_file_for, read_settings, stack_config
-
     path = override_file_for(file)
     try:
         table = read_settings(path).get(STACK_TABLE) if path is not None else None
@@ -39,7 +39,6 @@ def prepare_canopennode(device: Device, file: str, explain: bool, stack_files: t
     Returns the extra input files (for the depfile). Exits 2 on a bad override or stack
     configuration file, 1 when the canopennode profile finds errors.
     """
-    from ..canopennode_overrides import apply_overrides, override_file_for
     from ..lint import load_selection
     from ..lint.canopennode import profile_findings
     from ..lint.runner import has_errors
@@ -82,7 +81,6 @@ def keep_editor_readable(device: Device, damaged: set[int]) -> None:
     `0` as an OCTET_STRING, `1.5f` as a REAL) are not damaged, and those errors are not reported: the view reads
     them as CANopenEditor does, and --explain says how."""
     from ..eds.where import damaged_objects
-    from ..model.canopennode import editor_entry_type, editor_reads
 
     for index, diagnostics in damaged_objects(device).items():
         obj = device.objects.get(index)

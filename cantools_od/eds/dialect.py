@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from ..canopennode.info import EDS_COMMENT_KEYS
 from ..model import Dialect
 from .ini import IniSection, Stream
 
@@ -97,8 +98,8 @@ def _telling_keys(keys: tuple[str, ...]) -> bool:
 
 
 # Comments only CANopenNode's tools write (a match at the start, as `str.startswith`).
-_canopennode_comment = re.compile(";StorageLocation|;TPDODetectCos").match
-MARKERS = (";StorageLocation", ";TPDODetectCos")
+_canopennode_comment = re.compile("|".join(map(re.escape, EDS_COMMENT_KEYS))).match
+MARKERS = EDS_COMMENT_KEYS
 """Comments of which a text must hold one, or else a `+ $NODEID` ending (`_PLUS_DOLLAR`), for `_other` to find
 evidence in anything but a key (`CreatedBy`, `EDSVersion`)."""
 # What `_NODEID_LAST` needs of a value, and more: "+", blanks, "$". In UTF-8 bytes, a blank `str` patterns know and

@@ -11,9 +11,11 @@ from __future__ import annotations
 
 import re
 
+from ..canopennode.info import STORAGE_LOCATION
+
 _NAMES = frozenset({"DeviceInfo", "DeviceComissioning", "Comments", "DummyUsage", "Lines", "NodeID",
     "Baudrate", "ParameterName", "ObjectType", "DataType", "AccessType", "DefaultValue", "ParameterValue", "LowLimit",
-    "HighLimit", "PDOMapping", "CompactSubObj", "NrOfEntries", "Factor", "Description", "Unit", "StorageLocation",
+    "HighLimit", "PDOMapping", "CompactSubObj", "NrOfEntries", "Factor", "Description", "Unit", STORAGE_LOCATION,
     "VendorName", "VendorNumber", "ProductName", "ProductNumber", "RevisionNumber", "OrderCode", "SimpleBootUpMaster",
     "SimpleBootUpSlave", "Granularity", "DynamicChannelsSupported", "GroupMessaging", "NrOfRXPDO", "NrOfTXPDO",
     "LSS_Supported"})  # fmt: skip

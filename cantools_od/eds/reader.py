@@ -6,6 +6,7 @@ import re
 from collections.abc import Callable, Iterable
 from typing import Any
 
+from ..canopennode.info import STORAGE_LOCATION_PREFIX
 from ..collector import paused
 from ..model import (
     Comments,
@@ -30,14 +31,16 @@ from .decode import decode, utf8_pieces
 from .dialect import DialectEvidence, directive, may_hold_markers
 from .report import Report
 from .sections import Collected, collect, raw_section
-from .storage import PREFIX, read_storage_groups
+from .storage import read_storage_groups
 from .typed_values import store, type_values
 from .values import parse_int, parse_value
 
 _HEX4 = re.compile(r"[0-9a-fA-F]{4}\Z")
 _SUB_DEFAULTS = field_defaults(SubObject)
 _OBJECT_DEFAULTS = field_defaults(Object)
-STORAGE_MARK = PREFIX.encode("ascii")  # no file without it has a storage-group comment: a scan spares a walk
+STORAGE_MARK = STORAGE_LOCATION_PREFIX.encode(
+    "ascii"
+)  # no file without it has a storage-group comment: a scan spares a walk
 
 
 def read_bytes(data: bytes, file: str = "", node_id: int | None = None, dcf: bool | None = None) -> Device:

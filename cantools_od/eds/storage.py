@@ -6,16 +6,15 @@ line right after ObjectType; reading it fills CanopenNodeInfo.storage_group.
 
 from __future__ import annotations
 
+from ..canopennode.info import STORAGE_LOCATION_PREFIX
 from ..model import CanopenNodeInfo, Device, Variable
-
-PREFIX = ";StorageLocation="
 
 
 def written_group(var: Variable) -> str | None:
     for lines in var.comments.values():
         for line in lines:
-            if line.startswith(PREFIX):
-                return line[len(PREFIX) :].strip()
+            if line.startswith(STORAGE_LOCATION_PREFIX):
+                return line[len(STORAGE_LOCATION_PREFIX) :].strip()
     return None
 
 
@@ -40,5 +39,5 @@ def storage_comments(var: Variable, keys: list[str]) -> dict[str, list[str]]:
         return comments
     after = keys.index("ObjectType") + 1 if "ObjectType" in keys and keys[-1] != "ObjectType" else 0
     key = keys[after]
-    comments[key] = [f"{PREFIX}{group}", *comments.get(key, [])]
+    comments[key] = [f"{STORAGE_LOCATION_PREFIX}{group}", *comments.get(key, [])]
     return comments

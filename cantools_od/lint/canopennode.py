@@ -13,11 +13,12 @@ import math
 import re
 from collections.abc import Iterator
 
-from ..model import DataType, Device, Location, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
-from ..model.canopennode import (
+from ..canopennode.editor import editor_entry_type, editor_reads, pdo_bits_pair, sdo_directions
+from ..canopennode.profile import (
     COMPANIONS,
     CONSECUTIVE,
     COUNT_LIMITS,
+    HEARTBEAT_CONSUMERS,
     NODEID_AREAS,
     REQUIRED_COUNTS,
     SWITCHED_COMPANIONS,
@@ -25,12 +26,11 @@ from ..model.canopennode import (
     StackConfig,
     StackSwitch,
     count_label_for,
-    editor_entry_type,
-    editor_reads,
-    pdo_bits_pair,
-    sdo_directions,
+    count_macro,
+    pdo_attribute_text,
     standard_storage_group,
 )
+from ..model import DataType, Device, Location, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
 from ..model.datatypes import DOMAIN, INDEX_BY_NAME, REAL32, UNSIGNED8
 from . import examples as ex
 from .rules import CANOPENNODE, Context, Finding, rule
@@ -202,7 +202,7 @@ def required_counts(ctx: Context) -> Iterator[Finding]:
     stack = ctx.options.stack or StackConfig()
     for label, index in REQUIRED_COUNTS:
         if label not in counts:
-            message = f"no object counts as {label} (usually {index:04X}h): CANopen.c needs OD_CNT_{label}"
+            message = f"no object counts as {label} (usually {index:04X}h): CANopen.c needs {count_macro(label)}"
             where = ctx.at(ctx.device.mandatory_objects or ctx.device.file_info)
             yield from _switched(ctx, stack, SWITCHED_COUNTS.get(label), message, where)
     present = {obj.index for obj in _objects(ctx)}
@@ -280,15 +280,15 @@ def count_limits(ctx: Context) -> Iterator[Finding]:
 def _heartbeat_consumers(ctx: Context, counts: dict[str, list[Object]]) -> Iterator[Finding]:
     """1016h as the heartbeat consumer (when built in) needs it: an ARRAY of 1 to 127 entries."""
     heartbeat = ctx.device.objects.get(0x1016)
-    if "HB_CONS" not in counts or heartbeat is None:
+    if HEARTBEAT_CONSUMERS not in counts or heartbeat is None:
         return
     message = ""
     if heartbeat.kind is not ObjectKind.ARRAY:
-        message = "1016h must be an ARRAY: the stack sizes its consumers by OD_CNT_ARR_1016"
+        message = f"1016h must be an ARRAY: the stack sizes its consumers by {count_macro('ARR_1016')}"
     elif not 1 <= len(heartbeat.subs) - 1 <= 127:
         message = f"1016h has {len(heartbeat.subs) - 1} consumers; the stack allows 1 to 127"
     if message:
-        need = SWITCHED_COUNTS["HB_CONS"]
+        need = SWITCHED_COUNTS[HEARTBEAT_CONSUMERS]
         wanted = (ctx.options.stack or StackConfig()).needs(need)
         if wanted:
             yield ctx.report("CNO006", message, ctx.at(heartbeat))
@@ -426,8 +426,9 @@ def pdo_bits_differ(ctx: Context) -> Iterator[Finding]:
             ours, its = pdo_bits_pair(var)
             if ours != its:
                 where = f"{obj.index:04X}h" + (f" sub{subindex:X}" if obj.has_subs else "")
-                message = (f"{where}: ODA_{ours}PDO for {var.access} with PDOMapping=1; CANopenEditor writes "
-                           f"ODA_{its}PDO ([stack] pdo_attributes = \"canopeneditor\" keeps its bits)")  # fmt: skip
+                keep = '([stack] pdo_attributes = "canopeneditor" keeps its bits)'
+                message = (f"{where}: {pdo_attribute_text(ours)} for {var.access} with PDOMapping=1; CANopenEditor "
+                           f"writes {pdo_attribute_text(its)} {keep}")  # fmt: skip
                 yield ctx.report("CNO010", message, ctx.at(ctx.section_of(obj, var), "PDOMapping"))
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
+from ..canopennode.profile import stack_adds_node_id
 from ..model import Device, NodeIdExpr, Severity, standard_type
 from ..model.assemble import construct
 from ..model.cia301.cobid import (
@@ -24,7 +25,7 @@ from ..model.cia301.cobid import (
     predefined_pdo,
     restricted,
 )
-from ..model.cia301.connections import canopennode_adds_node_id, cob_entries, predefined_cob_base, producers
+from ..model.cia301.connections import cob_entries, predefined_cob_base, producers
 from ..model.cia301.objects import COB_ID_EMCY, FIRST_SDO_SERVER
 from ..model.cia301.pdo import COMM_SUBS, PREDEFINED, RX, TX, Pdo
 from ..model.cia301.slots import Slot, slot
@@ -243,7 +244,7 @@ def _stack_rebased(ctx: Context, cob: Cob) -> bool:
     slot_ = cob.slot
     if not ctx.for_canopennode or slot_ is None or isinstance(cob.value, NodeIdExpr):
         return False
-    return canopennode_adds_node_id(slot_.owner.index, slot_.subindex, cob.value)
+    return stack_adds_node_id(slot_.owner.index, slot_.subindex, cob.value)
 
 
 @rule(

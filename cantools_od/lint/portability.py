@@ -11,6 +11,7 @@ from collections import Counter
 from collections.abc import Iterator
 from weakref import WeakKeyDictionary
 
+from ..canopennode.info import EDS_COMMENT_KEYS
 from ..eds import keys
 from ..eds.decode import decode_as
 from ..model import (
@@ -34,7 +35,7 @@ E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 _EXTENSION_KEYS = {keys.normalize(key) for key in EXTENSION_KEYS}
 _STRING_FIELDS = (("ParameterName", "name"), ("Denotation", "denotation"))
-_EXTENSIONS = (";StorageLocation", ";TPDODetectCos")
+_EXTENSIONS = EDS_COMMENT_KEYS
 _TEXT_FIELDS = (*_STRING_FIELDS, ("DefaultValue", "default"), ("ParameterValue", "parameter_value"))
 
 
@@ -183,7 +184,7 @@ def extension_comments(ctx: Context) -> Iterator[Finding]:
         if var.comments and any(line.startswith(_EXTENSIONS) for block in var.comments.values() for line in block):
             found.append(var)
     if found:
-        message = f"{len(found)} section{'s' if len(found) != 1 else ''} with ;StorageLocation/;TPDODetectCos comments"
+        message = f"{len(found)} section{'s' if len(found) != 1 else ''} with {'/'.join(_EXTENSIONS)} comments"
         yield ctx.report("DIA006", message + "; only CANopenNode tools read them", ctx.at(found[0]))
 
 

@@ -12,8 +12,8 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any, NamedTuple, TypeVar
 
+from ..canopennode.profile import StackConfig
 from ..model import Device, Dialect, Location, Object, Section, Severity, SubObject, Variable
-from ..model.canopennode import StackConfig
 from ..model.cia301.pdo import frame_bits
 from ..model.source import location
 

@@ -9,6 +9,7 @@ import re
 from collections.abc import Iterable, Iterator
 from typing import NamedTuple
 
+from ..canopennode.info import STORAGE_LOCATION
 from ..eds import keys
 from ..eds.peer_names import python_canopen_reads
 from ..model import Device, Location, Section, Severity
@@ -22,7 +23,7 @@ MAX_NAME = 241  # 255 - len("ParameterName=")
 RESERVED_DEVICE_INFO = ("ProductVersion", "ProductRevision", "LMT_ManufacturerName", "LMT_ProductName",
                         "ExtendedBootUpMaster", "ExtendedBootUpSlave")  # fmt: skip
 LATER_OBJECT_KEYS = ("SRDOMapping", "InvertedSRAD")
-EXTENSION_KEYS = ("Factor", "Unit", "Description", "StorageLocation")  # python-canopen; see portability
+EXTENSION_KEYS = ("Factor", "Unit", "Description", STORAGE_LOCATION)  # python-canopen; see portability
 _OBJECT_KEYS = (*OBJECT_FIELDS, *LATER_OBJECT_KEYS, *EXTENSION_KEYS)
 _OBJECT_LIKE = re.compile(r"[0-9a-f]{1,4}(?:sub[0-9a-f]+|name|value|denotation|objectlinks)?\Z", re.IGNORECASE)
 _MODULE = re.compile(

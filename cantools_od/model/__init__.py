@@ -1,6 +1,6 @@
 """The typed object-dictionary model: CANopen, independent of any file format."""
 
-from .canopennode import CanopenNodeInfo, SrdoAccess
+from ..canopennode.info import CanopenNodeInfo, SrdoAccess
 from .datatypes import STANDARD_TYPES, DataType, ValueKind, standard_type, type_by_name
 from .device import (
     Comments,

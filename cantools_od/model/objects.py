@@ -6,7 +6,7 @@ from enum import IntEnum, StrEnum
 
 from pydantic import BaseModel, ConfigDict, PrivateAttr
 
-from .canopennode import CanopenNodeInfo
+from ..canopennode.info import CanopenNodeInfo
 from .datatypes import DataType, standard_type
 from .source import Origin
 from .values import NodeIdExpr, Value

@@ -14,20 +14,22 @@ import struct
 from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
+from ..canopennode.profile import (
+    CONFIG_ARRAYS,
+    CONFIG_COUNTS,
+    CONFIG_ENTRIES,
+    OBJECT_TYPES,
+    attribute_names,
+)
 from ..model import ValueKind
-from ..model.canopennode import CONFIG_ARRAYS, CONFIG_ENTRIES
-from ..views.canopennode import ARR, REC, VAR, NodeEntry, NodeObject, NodeView
+from ..views.canopennode import ARR, REC, VAR, NodeEntry, NodeObject, NodeView, build_node_view
 from ..views.codegen import DeviceView
 from . import Each, stream_template, whole
 
 Fields = tuple[tuple[str, str], ...]  # (field, C value) pairs of one OD_obj_*_t
 Described = tuple[tuple["Stored", ...], tuple[Fields, ...]]
 
-# CO_config_t members filled by NAME_INIT_CONFIG: count labels and the entries the stack looks up.
-CONFIG_COUNTS = ("NMT", "HB_CONS", "EM", "SDO_SRV", "SDO_CLI", "TIME", "SYNC", "RPDO", "TPDO", "LEDS",
-                 "GFC", "SRDO", "LSS_SLV", "LSS_MST", "GTWA", "TRACE")  # fmt: skip
 _INTEGER_TYPES = {1: "int8_t", 2: "int16_t", 4: "int32_t", 8: "int64_t"}
-_ODT = {VAR: ("ODT_VAR", "OD_obj_var_t"), ARR: ("ODT_ARR", "OD_obj_array_t"), REC: ("ODT_REC", "OD_obj_record_t")}
 
 
 @dataclass(frozen=True)
@@ -139,12 +141,7 @@ def _integer(data: bytes, signed: bool) -> str:
 
 def attribute(entry: NodeEntry) -> str:
     a = entry.attributes
-    bits = [f"ODA_SDO_{a.sdo}"] if a.sdo else []
-    bits += [f"ODA_{a.pdo}PDO"] if a.pdo else []
-    bits += [f"ODA_{a.srdo}SRDO"] if a.srdo else []
-    bits += ["ODA_MB"] if a.multibyte else []
-    bits += ["ODA_STR"] if a.string else []
-    return " | ".join(bits) or "0"
+    return " | ".join(attribute_names(a.sdo, a.pdo, a.srdo, a.multibyte, a.string)) or "0"
 
 
 class _Builder:
@@ -160,7 +157,7 @@ class _Builder:
             stored, descriptors = self.array(obj, name, where)
         else:
             stored, descriptors = self.record(obj, where)
-        odt, od_type = _ODT[obj.kind]
+        odt, od_type = OBJECT_TYPES[obj.kind]
         return CObject(f"{obj.index:04X}", name, obj.c_name, obj.kind, obj.group, len(obj.entries), odt, od_type,
                        obj.kind == REC, stored, descriptors)  # fmt: skip
 
@@ -177,7 +174,7 @@ class _Builder:
         stored: list[Stored] = []
         if sub0.stored:
             stored.append(Stored("uint8_t", f"{name}_sub0", "", initializer(sub0)))
-        held = any(e.stored for e in elements)
+        held = first.stored  # the view gives all elements memory or none
         if held:
             inits = [initializer(replace(e, data_type=first.data_type)) for e in elements]
             stored.append(Stored(c, name, f"[{self.p}_CNT_ARR_{obj.index:04X}]{dims}", "{" + ", ".join(inits) + "}"))
@@ -253,8 +250,6 @@ def render_node_view(view: NodeView) -> dict[str, str]:
 
 def stream(view: DeviceView) -> dict[str, Iterable[str]]:
     """`gen -t canopennode`, rendered as it is read: the device must have passed the canopennode lint profile."""
-    from ..views.canopennode import build_node_view
-
     return stream_node_view(build_node_view(view.device, view.name, view.source_name))
 
 

@@ -18,9 +18,9 @@ inference below, which `inferences` lists one line each:
 
 Values follow the stack's conventions: `$NODEID+n` is stored as n (the stack adds the node-ID
 to the COB-IDs it manages at run time); an entry without a default gets no memory (`dataOrig`
-NULL, for the application to provide through `OD_extension_init`), as does a DOMAIN, except in
-the communication area 1000h-1FFFh, which CO_CANopenInit reads (0 then; 1003h, 1010h and 1011h,
-which the stack extends itself, keep no memory as in CANopenEditor); strings
+NULL, for the application to provide through `OD_extension_init`), as does a DOMAIN, except the
+objects CO_CANopenInit reads (`stack_reads_at_init`: 0 then); an ARRAY's elements have memory all
+or none, as its first element decides (CANopenEditor's exporter); strings
 reserve max(default length, `string_length_min`) bytes, VISIBLE_STRING one more for the
 terminator; 24/40/48/56-bit integers and TIME types are byte arrays in CANopen byte order.
 """
@@ -28,13 +28,32 @@ terminator; 24/40/48/56-bit integers and TIME types are byte arrays in CANopen b
 from __future__ import annotations
 
 import functools
-import re
 import struct
-import sys
-import unicodedata
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
+from ..canopennode.editor import (
+    array_has_memory,
+    c_name,
+    editor_entry_type,
+    editor_integer,
+    editor_octets,
+    editor_pdo_word,
+    editor_real,
+    entry_has_memory,
+    pdo_bits_pair,
+    pdo_directions,
+    sdo_directions,
+)
+from ..canopennode.profile import (
+    RAM,
+    SRDO_DIRECTIONS,
+    count_label_for,
+    count_macro,
+    pdo_attribute_text,
+    stack_reads_at_init,
+    standard_storage_group,
+)
 from ..identifiers import RESERVED
 from ..model import (
     CanopenNodeInfo,
@@ -50,25 +69,10 @@ from ..model import (
     ValueKind,
     Variable,
 )
-from ..model.canopennode import (
-    RAM,
-    count_label_for,
-    editor_entry_type,
-    editor_integer,
-    editor_octets,
-    editor_pdo_word,
-    editor_real,
-    pdo_bits_pair,
-    pdo_directions,
-    sdo_directions,
-    stack_reads_at_init,
-    standard_storage_group,
-)
 from ..model.datatypes import DOMAIN
 
 VAR, ARR, REC = "VAR", "ARR", "REC"
 _KINDS = {ObjectKind.VAR: VAR, ObjectKind.DOMAIN: VAR, ObjectKind.ARRAY: ARR, ObjectKind.RECORD: REC}
-_WORD = re.compile(r"[A-Za-z0-9_]+")
 
 
 @dataclass(frozen=True, slots=True)
@@ -158,33 +162,6 @@ class NodeView:
 # --- names -----------------------------------------------------------------------------------
 
 
-def c_name(name: str) -> str:
-    """CANopenEditor's spelling of a display name (v4.1 and later): camelCase words, '-' as '_', '_'
-    between capitals, '_' before a leading digit.
-
-    "COB-ID SYNC message" → COB_ID_SYNCMessage, "Highest sub-index supported" →
-    highestSub_indexSupported, "Variable NV Int32" → variableNV_Int32, "Trigger input x8" →
-    triggerInputX8. Application code written
-    against CANopenEditor's OD.h (OD_PERSIST_COMM.x1018_identity.vendor_ID) keeps compiling.
-    """
-    folded = unicodedata.normalize("NFKD", name).encode("ascii", "ignore").decode("ascii")
-    out, last = "", ""
-    for word in _WORD.findall(folded.replace("-", "_")):
-        if last.isupper() and word[0].isupper():
-            out += "_"
-        last = word[-1]
-        if len(word) > 1 and word[0].isalpha():
-            word = word[0].upper() + word[1:]
-        out += word
-    if out[:1].isdigit():
-        out = "_" + out
-    elif len(out) > 1 and out[0].isalpha() and out[1].islower():
-        out = out[0].lower() + out[1:]
-    elif len(out) == 1:
-        out = out.lower()
-    return sys.intern(out)  # members repeat from object to object (sub1, highestSub_indexSupported)
-
-
 def _member_names(subs: Sequence[tuple[int, Variable]]) -> dict[int, str]:
     names: dict[int, str] = {}
     taken: set[str] = set()
@@ -244,7 +221,7 @@ def _attributes(dtype: DataType, var: Variable, info: CanopenNodeInfo | None) ->
     access = var.access
     sdo = sdo_directions(access.value if access else None)
     pdo = pdo_directions(var.pdo_mapping_kind(), access.value if access else None)
-    srdo = {"tx": "T", "rx": "R", "trx": "TR"}.get(info.access_srdo.value if info and info.access_srdo else "", "")
+    srdo = SRDO_DIRECTIONS.get(info.access_srdo.value if info and info.access_srdo else "", "")
     multibyte = dtype.is_numeric and dtype.bits in (16, 32, 64)
     return _shared_attributes(sdo, pdo, srdo, multibyte, dtype.kind in (ValueKind.STRING, ValueKind.UNICODE))
 
@@ -287,7 +264,7 @@ class _Builder:
         if held is None and size > 0 and not textual and stack_reads_at_init(obj.index):
             held = bytes(size)
             self.note(where, "no default value: 0, as CO_CANopenInit reads it from the OD")
-        stored = size > 0 and (held is not None or textual)
+        stored = entry_has_memory(size, held is not None, textual)
         if not stored and dtype.index != DOMAIN.index:
             self.note(where, "no default value: no memory in the OD, the application provides it (OD_extension_init)")
         default = held if held is not None else bytes(size)
@@ -318,6 +295,19 @@ class _Builder:
                 return real
         return value
 
+    def one_array(self, obj: Object, entries: tuple[NodeEntry, ...]) -> tuple[NodeEntry, ...]:
+        """An ARRAY's elements are one C array: all have memory or none, as the first element decides (CANopenEditor
+        reads the first element's default for the whole array). Elements that disagree are 0, or lose their default."""
+        sub0, elements = entries[0], entries[1:]
+        stored = array_has_memory([e.stored for e in elements])
+        for e in elements[1:]:
+            if e.stored != stored:
+                where = f"{obj.index:04X}sub{e.subindex:X}"
+                self.note(where, "no default value: 0, as the ARRAY's first element has one" if stored else
+                                 "default ignored: the ARRAY's first element has none, so the ARRAY has no memory "
+                                 "(OD_extension_init), as in CANopenEditor")  # fmt: skip
+        return (sub0, *(e if e.stored == stored else replace(e, stored=stored) for e in elements))
+
     def settings(self, obj: Object) -> tuple[str, str | None]:
         info = obj.canopennode or CanopenNodeInfo.model_construct()
         where = f"{obj.index:04X}h"
@@ -330,7 +320,7 @@ class _Builder:
             self.note(where, f"storage group {group} inferred from the index")
         label = count_label_for(obj.index, obj.canopennode)
         if info.count_label is None and label is not None:
-            self.note(where, f"count label {label} inferred from the index (OD_CNT_{label})")
+            self.note(where, f"count label {label} inferred from the index ({count_macro(label)})")
         return group, label
 
     def build(self, obj: Object) -> NodeObject:
@@ -346,6 +336,8 @@ class _Builder:
                 lengths = [self.entry(obj, n, v, "").length for n, v in subs[1:]]
                 length = max(lengths, default=0)
             entries = tuple(self.entry(obj, n, v, members[n], length if n > 0 else None) for n, v in subs if n >= 0)
+            if kind == ARR:
+                entries = self.one_array(obj, entries)
         return NodeObject(obj.index, obj.name, c_name(obj.name) or "object", kind, group, label, entries)
 
 
@@ -358,12 +350,9 @@ def keep_editor_pdo_bits(device: Device) -> list[str]:
             if ours != its:
                 var.state_pdo_mapping(editor_pdo_word(var.stated_pdo_mapping, var.pdo_mapping))
                 where = f"{obj.index:04X}" + (f"sub{subindex:X}" if obj.has_subs else "")
-                lines.append(f"{where}: {_bits(its)} as CANopenEditor writes it, not {_bits(ours)} (pdo_attributes)")
+                text = f"{pdo_attribute_text(its)} as CANopenEditor writes it, not {pdo_attribute_text(ours)}"
+                lines.append(f"{where}: {text} (pdo_attributes)")
     return lines
-
-
-def _bits(directions: str) -> str:
-    return f"ODA_{directions}PDO" if directions else "no PDO bit"
 
 
 def generated_objects(device: Device) -> list[Object]:

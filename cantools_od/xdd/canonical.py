@@ -15,6 +15,7 @@ import re
 from collections import defaultdict
 from collections.abc import Sequence
 
+from ..canopennode.info import PROPERTIES
 from ..eds.format import DECIMAL_INTEGER, format_value
 from ..eds.hints import Hints
 from ..model import AccessType, Commissioning, Device, Dialect, Object, ObjectKind, Variable
@@ -52,14 +53,6 @@ _COMMISSIONING = (
     ("networkNumber", "net_number"),
     ("networkName", "network_name"),
     ("CANopenManager", "canopen_manager"),
-)
-_PROPERTIES = (
-    ("CO_disabled", "disabled"),
-    ("CO_countLabel", "count_label"),
-    ("CO_storageGroup", "storage_group"),
-    ("CO_flagsPDO", "flags_pdo"),
-    ("CO_accessSRDO", "access_srdo"),
-    ("CO_stringLengthMin", "string_length_min"),
 )
 # extra keys the reader fills from things this writer writes itself
 _HANDLED_EXTRA = ("Description", "label", "dataTypeIDRef", "access", "PDOmapping")
@@ -278,7 +271,7 @@ def _limits(out: _Out, device: Device, var: Variable, owner: Object) -> None:
 def _properties(out: _Out, var: Variable) -> None:
     info = var.canopennode
     if info is not None:  # most entries have none
-        for name, field in _PROPERTIES:
+        for name, field in PROPERTIES.items():
             value = getattr(info, field)
             if value is not None:
                 text = _attr(value.value if hasattr(value, "value") else value)

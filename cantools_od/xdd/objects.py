@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from ..eds.keys import is_decimal
+from ..canopennode.info import PROPERTY_PREFIX, read_property
 from ..eds.values import parse_value
 from ..model import (
     AccessType,
@@ -20,7 +20,6 @@ from ..model import (
     Device,
     Object,
     ObjectKind,
-    SrdoAccess,
     SubObject,
     ValueKind,
     Variable,
@@ -283,26 +282,16 @@ class ObjectReader:
     def _property(self, element: Element, info: CanopenNodeInfo, extra: dict[str, str]) -> bool:
         name = element.attrs.get("name", "")
         text = element.attrs.get("value", "")
-        value: Any = None
-        if name in ("CO_storageGroup", "CO_countLabel"):
-            value = text
-        elif name in ("CO_disabled", "CO_flagsPDO") and text in ("true", "false"):
-            value = text == "true"
-        elif name == "CO_accessSRDO" and text in SrdoAccess.__members__.values():
-            value = SrdoAccess(text)
-        elif name == "CO_stringLengthMin" and is_decimal(text):
-            value = int(text)
+        read = read_property(name, text)
         if name.startswith(EDS_PROPERTY):
             extra[name[len(EDS_PROPERTY) :]] = text  # an EDS key with no CiA 311 form, kept by our writer
             return True
-        if value is None:
-            if name.startswith("CO_"):
+        if read is None:
+            if name.startswith(PROPERTY_PREFIX):
                 self.ctx.warning("XDD007", f"property {name}={text!r} cannot be read; kept as text", element)
             extra[f"property.{name}"] = text
             return True
-        field = {"CO_storageGroup": "storage_group", "CO_countLabel": "count_label", "CO_disabled": "disabled"}
-        field |= {"CO_flagsPDO": "flags_pdo", "CO_accessSRDO": "access_srdo", "CO_stringLengthMin": "string_length_min"}
-        setattr(info, field[name], value)
+        setattr(info, *read)
         return True
 
     def _unknown_child(self, var: Variable, child: Element) -> None:

@@ -90,15 +90,6 @@ OBJECT_ATTRIBUTES = {
 EDS_PROPERTY = "EDS:"
 """Prefix of a `property` name that holds an EDS key CiA 311 has no attribute for (`EDS:Factor`)."""
 
-CANOPENNODE_PROPERTIES = (
-    "CO_storageGroup",
-    "CO_countLabel",
-    "CO_disabled",
-    "CO_flagsPDO",
-    "CO_accessSRDO",
-    "CO_stringLengthMin",
-)
-
 # Elements of CiA 311 this reader knows; others are reported as unknown (and kept).
 KNOWN_ELEMENTS = frozenset(
     [

@@ -13,10 +13,10 @@ from typing import Any
 import pytest
 
 from cantools_od.api import load
+from cantools_od.canopennode.profile import StackConfig
 from cantools_od.lint.canopennode import profile_findings
 from cantools_od.lint.runner import has_errors
 from cantools_od.model import Device
-from cantools_od.model.canopennode import StackConfig
 from cantools_od.render.canopennode import render_node_view
 from cantools_od.sniff import NotADeviceDescription
 from cantools_od.views.canopennode import build_node_view

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from cnokit import DEMO, STACK, Entry, load_accepted, parallel, stack, walk, write_od
 
-from cantools_od.model import AccessType, Device, NodeIdExpr, Object, ObjectKind, TimeValue, Value, Variable
+from cantools_od.model import AccessType, DataType, Device, NodeIdExpr, Object, ObjectKind, TimeValue, Value, Variable
 
 from support import corpus_files
 
@@ -80,15 +80,28 @@ def check_object(device: Device, obj: Object, seen: Entry) -> None:
             length = element
         assert got.length == length, where
         assert got.attribute == attribute(dtype.index, dtype.is_numeric, dtype.bits, var), where
-        data = expected_bytes(dtype.index, dtype.kind.value, _value(var), length) if length else None
-        if data is None and length and 0x1000 <= obj.index <= 0x1FFF and obj.index not in (0x1003, 0x1010, 0x1011):
-            data = bytes(length)  # communication objects CO_CANopenInit reads: 0 without a default
-        if obj.kind is ObjectKind.ARRAY and sub > 0 and data is None and got.data is not None:
-            data = bytes(length)  # an element without default in an array others give memory to
+        data = _data(dtype, obj.index, var, length)
+        if obj.kind is ObjectKind.ARRAY and sub > 0:  # one C array: memory for all elements or none, as the first
+            first = _data(device.entry_type(pairs[1][1], obj), obj.index, pairs[1][1], length)
+            data = None if first is None else (data or bytes(length))
         assert got.data == data, where
         stated = obj.canopennode.storage_group if obj.canopennode else None
         if got.data is not None and stated:
             assert got.group == stated, where
+
+
+# What CO_CANopenInit reads (CANopen.c, CO_config_t): these need memory, 0 without a default.
+READ_AT_INIT = {0x1001, 0x1005, 0x1006, 0x1007, 0x100C, 0x100D, 0x1012, 0x1014, 0x1015, 0x1016, 0x1017, 0x1019, 0x1300,
+                0x13FE, 0x13FF, *range(0x1200, 0x1300), *range(0x1301, 0x1341), *range(0x1381, 0x13C1),
+                *range(0x1400, 0x1C00)}  # fmt: skip
+
+
+def _data(dtype: DataType | None, index: int, var: Variable, length: int) -> bytes | None:
+    assert dtype is not None
+    data = expected_bytes(dtype.index, dtype.kind.value, _value(var), length) if length else None
+    if data is None and length and index in READ_AT_INIT:
+        data = bytes(length)
+    return data
 
 
 def _value(var: Variable) -> Value | None:

@@ -5,9 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from cantools_od import loads
+from cantools_od.canopennode.profile import StackConfig
 from cantools_od.lint import LintOptions, lint
 from cantools_od.model import CanopenNodeInfo
-from cantools_od.model.canopennode import StackConfig
 
 CODES = ("CNO001", "CNO002", "CNO003", "CNO004", "CNO005", "CNO006", "CNO007", "CNO008", "CNO009")
 

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from ..assemble import construct
 from ..device import Device
 from ..values import NodeIdExpr
-from .cobid import BASE_11BIT, EMCY_BASE, EXTENDED, HEARTBEAT_BASE, RTR, SDO_RX_BASE, SDO_TX_BASE, VALID, Cob, cob_of
+from .cobid import EMCY_BASE, HEARTBEAT_BASE, RTR, SDO_RX_BASE, SDO_TX_BASE, VALID, Cob, cob_of
 from .objects import COB_ID_EMCY, COB_ID_SYNC, COB_ID_TIME, SDO_CLIENTS, SDO_SERVERS
 from .pdo import COMM_BASE, PREDEFINED, TX, Pdo, pdos
 from .slots import slot
@@ -23,15 +23,6 @@ def predefined_cob_base(index: int, subindex: int) -> int | None:
         if subindex == 1 and 0 <= index - base < len(PREDEFINED[direction]):
             return PREDEFINED[direction][index - base]
     return None
-
-
-def canopennode_adds_node_id(index: int, subindex: int, value: int) -> bool:
-    """Whether the CANopenNode stack reads a stored COB-ID as its pre-defined base + the node-ID, where other
-    tools read it literally: a PDO 1-4 or EMCY COB-ID whose CAN-ID is the base itself (CO_PDO.c and
-    CO_Emergency.c add the node-ID to a "default CAN-ID stored without node-ID"), or the first SDO server's,
-    whose CAN-IDs the stack always makes 600h/580h + node-ID (CO_SDOserver.c)."""
-    base = predefined_cob_base(index, subindex)
-    return base is not None and (value & BASE_11BIT) == base and not value & EXTENDED
 
 
 def cob_entries(device: Device, pdo_list: list[Pdo]) -> Iterator[Cob]:

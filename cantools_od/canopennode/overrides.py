@@ -27,8 +27,9 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from .model import CanopenNodeInfo, Device, SrdoAccess, Variable
-from .model.canopennode import STACK_DEFAULTS, STACK_FLAGS, StackConfig
+from ..model import Device, Variable
+from .info import CanopenNodeInfo, SrdoAccess
+from .profile import STACK_DEFAULTS, STACK_FLAGS, SWITCH_PREFIX, StackConfig
 
 _KEY = re.compile(r"([0-9A-Fa-f]{4})(?:sub([0-9A-Fa-f]{1,2}))?")
 _FIELDS: dict[str, type] = {
@@ -215,10 +216,10 @@ def stack_config(files: list[str | Path], table: dict[str, Any] | None, table_fi
             if value not in ("cantools-od", "canopeneditor"):
                 raise ValueError(f"{where} pdo_attributes: 'cantools-od' or 'canopeneditor', not {value!r}")
             editor_pdo = value == "canopeneditor"
-        elif key.startswith("CO_CONFIG_") and isinstance(value, (int, str)) and not isinstance(value, bool):
+        elif key.startswith(SWITCH_PREFIX) and isinstance(value, (int, str)) and not isinstance(value, bool):
             names[key] = str(value)
         else:
-            raise ValueError(f"{where} {key}: expected a CO_CONFIG_* switch (an integer or flag names "
+            raise ValueError(f"{where} {key}: expected a {SWITCH_PREFIX}* switch (an integer or flag names "
                              "joined by '|') or pdo_attributes")  # fmt: skip
     switches = []
     for switch in STACK_DEFAULTS:
@@ -228,5 +229,5 @@ def stack_config(files: list[str | Path], table: dict[str, Any] | None, table_fi
             except ValueError as error:
                 raise ValueError(f"{switch}: {error}") from None
     sources = tuple(str(f) for f in files) + ((table_file,) if table and table_file else ())
-    declared = bool(files) or any(k.startswith("CO_CONFIG_") for k in table or {})
+    declared = bool(files) or any(k.startswith(SWITCH_PREFIX) for k in table or {})
     return StackConfig(tuple(switches), declared, editor_pdo, sources)

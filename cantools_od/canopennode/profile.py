@@ -1,21 +1,17 @@
-"""What the CANopenNode v4 stack needs to know about an object beyond CiA 301.
-
-CANopenEditor keeps these as `<property name="CO_...">` elements in its XDD/XPD
-projects, and CANopenNode EDS exports keep the storage group as a
-`;StorageLocation=` comment. Sources fill this in when the file says it; the
-CANopenNode target infers what is missing (and says so).
+"""What the CANopenNode v4 stack needs of an object dictionary beyond CiA 301: count labels, storage groups, the
+counts CANopen.c checks, the objects CO_CANopenInit reads, the build configuration (CO_CONFIG_*), and the C names
+of its attributes and object types.
 """
 
 from __future__ import annotations
 
-import re
-from enum import StrEnum
-from typing import Any, NamedTuple, Protocol
+from typing import NamedTuple
 
-from pydantic import BaseModel, ConfigDict
+from ..model.cia301.cobid import BASE_11BIT, EXTENDED
+from ..model.cia301.connections import predefined_cob_base
 
-# cia301.objects imports nothing: this module, which model/__init__ loads first, may use it without a cycle.
-from .cia301.objects import (
+# model/cia301/objects.py imports nothing: model/objects.py, which takes CanopenNodeInfo from here, meets no cycle.
+from ..model.cia301.objects import (
     COB_ID_EMCY,
     COB_ID_SYNC,
     COB_ID_TIME,
@@ -51,73 +47,7 @@ from .cia301.objects import (
     TPDO_COMM,
     TX,
 )
-from .datatypes import DOMAIN, DataType, ValueKind
-
-
-# What the profile's functions read of an entry, an object and a device: the model's classes have it, and this module,
-# which model/objects.py imports for CanopenNodeInfo, need not import them back.
-class Mappable(Protocol):
-    @property
-    def access(self) -> StrEnum | None: ...
-
-    @property
-    def stated_pdo_mapping(self) -> str | None: ...
-
-    @property
-    def pdo_mapping(self) -> bool | None: ...
-
-    def pdo_mapping_kind(self) -> str | None: ...
-
-
-class Typed(Protocol):
-    @property
-    def data_type(self) -> int | None: ...
-
-
-class Owner(Typed, Protocol):
-    @property
-    def kind(self) -> int: ...
-
-    @property
-    def dtype(self) -> DataType | None: ...
-
-
-class Types(Protocol):
-    def entry_type(self, var: Any, obj: Any) -> DataType | None: ...
-
-
-class SrdoAccess(StrEnum):
-    """CO_accessSRDO: whether an entry may be mapped into an SRDO, and which way."""
-
-    NO = "no"
-    TX = "tx"
-    RX = "rx"
-    TRX = "trx"
-
-
-class CanopenNodeInfo(BaseModel):
-    """CANopenNode metadata of an object (storage, count label, flags) or a sub-object (SRDO, string length).
-
-    Every field is None when the source does not state it.
-    """
-
-    model_config = ConfigDict(defer_build=True)
-
-    storage_group: str | None = None
-    """CO_storageGroup / ;StorageLocation=: the storage-group struct the value lives in (RAM, PERSIST_COMM...)."""
-    count_label: str | None = None
-    """CO_countLabel: the OD_CNT_<label> macro this object counts towards (NMT, EM, SDO_SRV, TPDO...)."""
-    disabled: bool | None = None
-    """CO_disabled: the object is kept in the project but left out of the generated OD."""
-    flags_pdo: bool | None = None
-    """CO_flagsPDO: the stack keeps per-sub-index TPDO request flags for this object."""
-    access_srdo: SrdoAccess | None = None
-    """CO_accessSRDO, per entry."""
-    string_length_min: int | None = None
-    """CO_stringLengthMin, per entry: bytes reserved for a string or octet string, at least its default's length."""
-
-    def is_empty(self) -> bool:
-        return all(value is None for value in self.__dict__.values())
+from .info import CanopenNodeInfo
 
 
 def _one(index: int) -> range:
@@ -126,6 +56,7 @@ def _one(index: int) -> range:
 
 # The OD_CNT_<label> macros the stack counts, by the index ranges of CiA 301/304 that hold their objects
 # (CANopen.c checks them with #error and sizes its object arrays from them).
+HEARTBEAT_CONSUMERS = "HB_CONS"  # the label of 1016h, whose ARRAY size the heartbeat consumer takes
 _COUNT_RANGES: tuple[tuple[range, str], ...] = (
     (_one(DEVICE_TYPE), "NMT"),
     (_one(ERROR_REGISTER), "EM"),
@@ -134,7 +65,7 @@ _COUNT_RANGES: tuple[tuple[range, str], ...] = (
     (_one(STORE_PARAMETERS), "STORAGE"),
     (_one(COB_ID_TIME), "TIME"),
     (_one(COB_ID_EMCY), "EM_PROD"),
-    (_one(CONSUMER_HEARTBEAT), "HB_CONS"),
+    (_one(CONSUMER_HEARTBEAT), HEARTBEAT_CONSUMERS),
     (_one(PRODUCER_HEARTBEAT), "HB_PROD"),
     (SDO_SERVERS, "SDO_SRV"),
     (SDO_CLIENTS, "SDO_CLI"),
@@ -143,6 +74,8 @@ _COUNT_RANGES: tuple[tuple[range, str], ...] = (
     (RPDO_COMM, "RPDO"),
     (TPDO_COMM, "TPDO"),
 )
+
+COUNT_LABELS = tuple(label for _, label in _COUNT_RANGES)
 
 # Communication-area objects whose values are states or commands, not configuration: kept in RAM.
 _RAM_IN_COMM_AREA = frozenset(
@@ -220,6 +153,16 @@ CONSECUTIVE: dict[str, tuple[int, int | None]] = {
 _NODEID_AREAS = (_one(COB_ID_EMCY), range(SDO_SERVERS[0], SDO_CLIENTS[-1] + 1), RPDO_COMM, TPDO_COMM)
 NODEID_AREAS: tuple[tuple[int, int], ...] = tuple((area[0], area[-1]) for area in _NODEID_AREAS)
 
+
+def stack_adds_node_id(index: int, subindex: int, value: int) -> bool:
+    """Whether the CANopenNode stack reads a stored COB-ID as its pre-defined base + the node-ID, where other
+    tools read it literally: a PDO 1-4 or EMCY COB-ID whose CAN-ID is the base itself (CO_PDO.c and
+    CO_Emergency.c add the node-ID to a "default CAN-ID stored without node-ID"), or the first SDO server's,
+    whose CAN-IDs the stack always makes 600h/580h + node-ID (CO_SDOserver.c)."""
+    base = predefined_cob_base(index, subindex)
+    return base is not None and (value & BASE_11BIT) == base and not value & EXTENDED
+
+
 # Communication objects the stack extends with its own read/write functions (EM history, storage):
 # like CANopenEditor, an entry of theirs without a default gets no memory.
 _STACK_EXTENDED = frozenset({ERROR_HISTORY, STORE_PARAMETERS, RESTORE_DEFAULTS})
@@ -235,13 +178,27 @@ CONFIG_ENTRIES = (
 CONFIG_ARRAYS = (CONSUMER_HEARTBEAT, ERROR_HISTORY)
 
 
+# The objects CO_CANopenInit reads through CO_config_t: the entries it names, and the SDO, PDO and SRDO objects
+# it walks from the first one of each kind. OD_get_value fails on an entry without memory, and so does the init.
+_READ_AT_INIT = frozenset(
+    {*CONFIG_ENTRIES, *SDO_SERVERS, *SDO_CLIENTS, *RPDO_COMM, *TPDO_COMM, *SRDO_COMM,
+     *(index + MAP_BASE[RX] - COMM_BASE[RX] for index in RPDO_COMM),
+     *(index + MAP_BASE[TX] - COMM_BASE[TX] for index in TPDO_COMM),
+     *(index + SRDO_MAP_OFFSET for index in SRDO_COMM)}
+) - _STACK_EXTENDED  # fmt: skip
+
+
 def stack_reads_at_init(index: int) -> bool:
-    """Whether CO_CANopenInit reads the object's value from the OD: it then needs memory even without a default."""
-    return index in COMMUNICATION_AREA and index not in _STACK_EXTENDED
+    """Whether CO_CANopenInit reads the object's value from the OD: it then needs memory even without a default.
+
+    Other communication objects (1000h, 1018h, 1029h, the program download objects 1F51h-1F57h...) the stack
+    never reads; the application serves them, and without a default they get no memory, as in CANopenEditor."""
+    return index in _READ_AT_INIT
 
 
 # --- the stack's build configuration (301/CO_config.h) ---------------------------------------
 
+SWITCH_PREFIX = "CO_CONFIG_"  # the stack's build switches, as CO_driver_target.h sets them
 # The flags of the CO_CONFIG_* switches that decide whether CANopen.c uses an object, as 301/CO_config.h
 # defines them, and the stack's defaults of those switches (what a CO_driver_target.h that says nothing gets).
 STACK_FLAGS: dict[str, int] = {
@@ -299,93 +256,38 @@ class StackConfig(NamedTuple):
         return bool(self.value(need.switch) & STACK_FLAGS[need.flag])
 
 
-# --- PDO attributes ----------------------------------------------------------------------------
+# --- the C names of CO_ODinterface.h and CANopen.c ------------------------------------------------
+
+COUNT_PREFIX = "OD_CNT_"  # OD_CNT_<label>: the number of objects counting towards a label
+# CO_config_t members filled by OD_INIT_CONFIG: its count labels (CNT_<label>), in the order of its members.
+CONFIG_COUNTS = ("NMT", "HB_CONS", "EM", "SDO_SRV", "SDO_CLI", "TIME", "SYNC", "RPDO", "TPDO", "LEDS",
+                 "GFC", "SRDO", "LSS_SLV", "LSS_MST", "GTWA", "TRACE")  # fmt: skip
+# The object types of OD_entry_t (ODT_*) with the struct of each one's description, by the view's kind.
+OBJECT_TYPES = {"VAR": ("ODT_VAR", "OD_obj_var_t"), "ARR": ("ODT_ARR", "OD_obj_array_t"),
+                "REC": ("ODT_REC", "OD_obj_record_t")}  # fmt: skip
+# The OD attribute bits (ODA_*), by meaning: SDO, PDO and SRDO directions ("R", "W", "T", "TR"...), multi-byte, string.
+ATTRIBUTE_PREFIX = "ODA_"
+SDO_ATTRIBUTES = {"R": "ODA_SDO_R", "W": "ODA_SDO_W", "RW": "ODA_SDO_RW"}
+PDO_ATTRIBUTES = {"T": "ODA_TPDO", "R": "ODA_RPDO", "TR": "ODA_TRPDO"}
+SRDO_ATTRIBUTES = {"T": "ODA_TSRDO", "R": "ODA_RSRDO", "TR": "ODA_TRSRDO"}
+MULTIBYTE_ATTRIBUTE = "ODA_MB"  # a 16/32/64-bit number the stack byte-swaps on big-endian targets
+STRING_ATTRIBUTE = "ODA_STR"  # a shorter value may be written (VISIBLE_STRING, UNICODE_STRING)
+# CO_accessSRDO's words (the overrides' access_srdo) as SRDO directions.
+SRDO_DIRECTIONS = {"tx": "T", "rx": "R", "trx": "TR"}
 
 
-def sdo_directions(access: str | None) -> str:
-    """The ODA_SDO_* bits of an access type: "R" (ro, const), "W" (wo), "RW" (rw, rwr, rww) or ""."""
-    if access is None:
-        return ""
-    return {"ro": "R", "const": "R", "wo": "W"}.get(access, "RW")
+def attribute_names(sdo: str, pdo: str, srdo: str, multibyte: bool, string: bool) -> list[str]:
+    """The ODA_* names of an entry's attribute, in CANopenEditor's order (SDO, PDO, SRDO, MB, STR)."""
+    names = [SDO_ATTRIBUTES[sdo]] if sdo else []
+    names += [PDO_ATTRIBUTES[pdo]] if pdo else []
+    names += [SRDO_ATTRIBUTES[srdo]] if srdo else []
+    return names + [MULTIBYTE_ATTRIBUTE] * multibyte + [STRING_ATTRIBUTE] * string
 
 
-def pdo_directions(word: str | None, access: str | None) -> str:
-    """The ODA_*PDO bits ("T", "R", "TR" or "") CANopenEditor gives a PDOmapping word and an access type.
-
-    An explicit direction (RPDO, or the access rww) wins, then TPDO (or rwr); optional and default
-    allow both directions whatever the access; no allows none.
-    """
-    if word == "RPDO" or access == "rww":
-        return "R"
-    if word == "TPDO" or access == "rwr":
-        return "T"
-    return "TR" if word in ("optional", "default") else ""
+def pdo_attribute_text(directions: str) -> str:
+    """`ODA_TPDO`... for messages; "no PDO bit" for none."""
+    return PDO_ATTRIBUTES[directions] if directions else "no PDO bit"
 
 
-def editor_pdo_word(stated: str | None, mappable: bool | None) -> str:
-    """The PDOmapping word CANopenEditor reads: an XDD's own, else an EDS's PDOMapping=1 as optional."""
-    return stated if stated is not None else ("optional" if mappable else "no")
-
-
-def pdo_bits_pair(var: Mappable) -> tuple[str, str]:
-    """An entry's ODA_*PDO directions, ours and CANopenEditor's.
-
-    They differ only on an EDS's PDOMapping=1 on a ro/const or wo entry: CANopenEditor reads it as
-    `optional` and allows both directions; CiA 301 maps a read-only entry into TPDOs only and a
-    write-only one into RPDOs only, so we keep the direction the access allows (CANopenEditor's own
-    EDS export writes ro with PDOMapping=1 for its TPDO-only entries).
-    """
-    access = var.access.value if var.access else None
-    ours = pdo_directions(var.pdo_mapping_kind(), access)
-    return ours, pdo_directions(editor_pdo_word(var.stated_pdo_mapping, var.pdo_mapping), access)
-
-
-def editor_octets(text: str) -> bytes | None:
-    """An OCTET_STRING default as CANopenEditor reads it: hex bytes of one or two digits between blanks ("0",
-    "1 2 A"), which CiA 306's even-length hex does not cover; None when the text is not of that form."""
-    tokens = text.split()
-    if not tokens or not all(len(t) <= 2 and all(c in "0123456789abcdefABCDEF" for c in t) for t in tokens):
-        return None
-    return bytes(int(t, 16) for t in tokens)
-
-
-_C_FLOAT = re.compile(r"[+-]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][+-]?\d+)?[fF]")
-
-
-def editor_real(text: str) -> float | None:
-    """A REAL default written as a C float literal ("0.0f"), which CANopenEditor copies into OD.c as it is."""
-    stripped = text.strip()
-    return float(stripped[:-1]) if _C_FLOAT.fullmatch(stripped) else None
-
-
-def editor_integer(text: str) -> int | None:
-    """An integer as CANopenEditor reads it where the file's own type did not say how (an ARRAY element with
-    DataType 0, whose ARRAY gives the type): 0x hex (U and L dropped), a leading 0 octal, else decimal."""
-    stripped = text.strip()
-    if re.fullmatch(r"0[xX][0-9A-Fa-f]+[uUlL]*", stripped):
-        return int(stripped.rstrip("uUlL"), 16)
-    if re.fullmatch(r"0[0-7]+", stripped):
-        return int(stripped, 8)
-    return int(stripped) if re.fullmatch(r"-?\d+", stripped) else None
-
-
-def editor_reads(dtype: DataType, text: str) -> bool:
-    """Whether CANopenEditor takes a default that CiA 306 cannot read: any DOMAIN default (it ignores them),
-    short hex octets of an OCTET_STRING (`0`, `1 2 A`), a C float literal of a REAL (`0.0f`), an integer of an
-    entry typed only by its ARRAY."""
-    if dtype.index == DOMAIN.index:
-        return True
-    if dtype.kind is ValueKind.OCTETS:
-        return editor_octets(text) is not None
-    if dtype.kind in (ValueKind.UNSIGNED, ValueKind.SIGNED):
-        return editor_integer(text) is not None
-    return dtype.kind is ValueKind.REAL and editor_real(text) is not None
-
-
-def editor_entry_type(device: Types, var: Typed, obj: Owner) -> DataType | None:
-    """The entry's type as CANopenEditor takes it: its own, else, for an ARRAY element whose DataType is 0 or
-    missing, the ARRAY's (old CANopenEditor projects write `dataType="0000"` on the elements)."""
-    dtype = device.entry_type(var, obj)
-    if dtype is None and var is not obj and obj.kind == 0x8 and not var.data_type:
-        return obj.dtype
-    return dtype
+def count_macro(label: str) -> str:
+    return COUNT_PREFIX + label

@@ -137,3 +137,13 @@ def test_select_by_family_from_the_command_line(tmp_path: object) -> None:
     )
     found = {f["code"] for f in __import__("json").loads(result.stdout)}
     assert {"PDO011", "COB004"} <= found and "PDO052" not in found
+
+
+def test_the_readme_counts_the_rules_and_codes_there_are() -> None:
+    """The README's door names how many rules lint runs and how many codes exist; a new rule updates it."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    found = re.search(r"a linter of (\d+) rules \((\d+) codes in all", text)
+    assert found, "the README no longer counts the rules"
+    every = codes()  # registers every family's rules first
+    checks = sum(1 for code in every.values() if code.rule.check is not None)
+    assert (int(found[1]), int(found[2])) == (checks, len(every))

@@ -38,8 +38,9 @@ def command(
     peer reader reads what the original said. A file is written only when its
     content changes, and never when the reader reports an error in it (a value
     or section it cannot read, which the canonical form could not carry; exit
-    1), but for a section or key given twice, which it writes once; the errors
-    of lint's rules are lint's to report. A file that cannot be
+    1), but for a section or key given twice, which it writes once, and a
+    $NODEID formula in another order, written $NODEID+n; the errors of lint's
+    rules are lint's to report. A file that cannot be
     read is reported (exit 2) and every other file still formatted."""
     from ..lint.config import load_int_style
 

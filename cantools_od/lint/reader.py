@@ -111,12 +111,16 @@ rejects it), an inline comment after a value (CiA 306 has none), blank-separated
 )
 declare(
     "EDS033",
-    W,
+    E,
     "Non-portable $NODEID formula",
     """
-CiA 306 writes `$NODEID` first, in upper case, followed by `+` terms. `0x180+$NODEID` is
-rejected by lely; `$NODEID+0x100+0x80` is read as one term by python-canopen and lely;
-lower-case `$nodeid` is not accepted by every tool. Subtracting from `$NODEID` is an error.""",
+CiA 306 writes `$NODEID` first, in upper case, followed by `+` terms. `0x180+$NODEID` and
+`$NODEID+0x100+0x80` are errors: lely's dcf-tools reject the value ("invalid value"), so dcfchk
+fails and dcfgen refuses the file ("invalid DCF"); python-canopen reads the first and no value
+for the second. Subtracting from
+`$NODEID` is an error. Lower-case `$nodeid`, which the peers read, is a warning, and so is a
+form only lely rejects when it stands in an XDD, which lely does not read. `fmt` writes
+each formula as `$NODEID+n` (a subtraction as it was written).""",
     (
         "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
         "DefaultValue=0x580+$NODEID\nPDOMapping=0"
@@ -126,8 +130,7 @@ lower-case `$nodeid` is not accepted by every tool. Subtracting from `$NODEID` i
         "DefaultValue=$NODEID+0x580\nPDOMapping=0"
     ),
     placed=Placement(
-        Clause.PORTABILITY,
-        "not CiA 306's spelling; lely rejects `0x180+$NODEID`, python-canopen reads several terms as one",
+        Clause.PEER_CANNOT_LOAD, "lely's dcf-tools raise on `0x180+$NODEID`: dcfchk fails, dcfgen refuses the file"
     ),
 )
 declare(

@@ -223,11 +223,12 @@ def _strip_origins(data: object) -> object:
     return data
 
 
-READ_WHOLE = frozenset({"EDS002", "EDS100"})
+READ_WHOLE = frozenset({"EDS002", "EDS033", "EDS100"})
 """Reader errors about the peers, not about what the reader could read: python-canopen and lely's dcfchk cannot load
 such a file (they raise), so lint reports an error, but the reader read all of it, one way, and a command carrying
 it on loses nothing. A section or key given twice (EDS002) is written once, as the reader merged it: `fmt` and
-`convert` are how it is repaired. A file that is not UTF-8 (EDS100) is read whole in the code page it was guessed
+`convert` are how it is repaired; so is a `$NODEID` formula in another order (EDS033), written `$NODEID+n` (a
+subtraction keeps its spelling). A file that is not UTF-8 (EDS100) is read whole in the code page it was guessed
 to be in, which `fmt` keeps."""
 
 

@@ -157,6 +157,29 @@ def test_an_empty_pdo_mapping_is_an_error_as_python_canopen_cannot_load_it(tmp_p
     assert _python_canopen(path) == "ValueError"
 
 
+def test_nodeid_placed_last_is_an_error_as_lelys_tools_refuse_the_file(tmp_path: Path) -> None:
+    # oresat-firmware's EDS writes `0x80+$NODEID`: python-canopen reads it, lely's dcf-tools (dcfchk, and dcfgen,
+    # which loads a slave's file with Device.from_dcf) refuse the file; fmt writes `$NODEID+0x80`
+    import canopen
+    from dcf.device import Device
+
+    source = HISTORY / "oresat__oresat-firmware__13" / "old.eds"
+    found = [(severity, message) for code, severity, message in _lint(source, "EDS033") if code == "EDS033"]
+    assert (
+        "error",
+        "DefaultValue: '0x80+$NODEID': $NODEID should come first ($NODEID+n); lely rejects this form",
+    ) in found
+    assert canopen.import_od(str(source), node_id=5)[0x1014].default == 0x85
+    with pytest.raises(ValueError, match="invalid DCF"):
+        Device.from_dcf(str(source), env={"NODEID": 5})
+    path = tmp_path / "device.eds"
+    path.write_bytes(source.read_bytes())
+    done = subprocess.run([*cli_command(), "fmt", str(path)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert "DefaultValue=$NODEID+0x80\n" in path.read_text(encoding="utf-8")
+    assert [code for code, _, _ in _lint(path, "EDS033")] == []
+
+
 def test_fmt_repairs_a_key_given_twice_that_no_peer_can_load(tmp_path: Path) -> None:
     # EDS002 is an error for lint, yet fmt writes the file once, as cantools-od read it: then python-canopen loads it
     source = CORPUS / "infranor__Easy-ak_v1.30.eds"

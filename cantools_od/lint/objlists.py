@@ -88,7 +88,9 @@ reported by EDS011.""",
         "ParameterName=Http drive catalog address\nObjectType=0x7\nDataType=0x0009\nAccessType=ro\n"
         "DefaultValue=x\nPDOMapping=0"
     ),
-    placed=Placement(Clause.PEER_CANNOT_LOAD, "lely dcfchk: object not found; the listed object is not described"),
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "the list announces an object the file does not describe (lely dcfchk: not found)"
+    ),
 )
 def listed_absent(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in _listings(ctx):

@@ -120,7 +120,8 @@ def test_nodeid_spelling_fix_touches_only_its_line(tmp_path: Path) -> None:
     assert len(findings) == 2
     # unsafe: python-canopen reads no default from the old spelling and one from the new
     assert all(f["fix"] == {"message": "write $NODEID+0x80", "safe": False} for f in findings)
-    assert run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--fix").returncode == 0
+    # $NODEID placed last is an error (lely's dcf-tools reject it): left unfixed, lint still fails
+    assert run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--fix").returncode == 1
     assert target.read_bytes() == source.encode()
     assert run_lint(tmp_path, "emcy.eds", "--select", "EDS033", "--fix", "--unsafe-fixes").returncode == 0
     assert target.read_bytes() == source.replace("0x80+$nodeid", "$NODEID+0x80").encode()

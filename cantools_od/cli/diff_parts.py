@@ -6,7 +6,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from pathlib import Path
 
-from ..model import Device, Severity
+from ..model import Device
+from ..model.device import blocking_errors
 
 NULL_DEVICE = "/dev/null"  # git's name for the missing side of an added or deleted file
 
@@ -36,8 +37,9 @@ def render(result: object, fmt: str, names: tuple[str, str] | None = None) -> st
 
 
 def reading_note(device: Device, name: str) -> str:
-    """The note that reading found errors (their values are compared as written); "" when it found none."""
-    errors = sum(1 for d in device.diagnostics if d.severity is Severity.ERROR)
+    """The note that reading found errors (their values are compared as written); "" when it found none. Errors
+    about peers on a file read whole (a key given twice) leave no value unread: they are lint's to report."""
+    errors = len(blocking_errors(device))
     if not errors:
         return ""
     return (

@@ -38,7 +38,9 @@ def command(
     peer reader reads what the original said. A file is written only when its
     content changes, and never when the reader reports an error in it (a value
     or section it cannot read, which the canonical form could not carry; exit
-    1); the errors of lint's rules are lint's to report. A file that cannot be
+    1), but for a section or key given twice, which it writes once, and a
+    $NODEID formula in another order, written $NODEID+n; the errors of lint's
+    rules are lint's to report. A file that cannot be
     read is reported (exit 2) and every other file still formatted."""
     from ..lint.config import load_int_style
 
@@ -80,7 +82,7 @@ def _format(task: _Task) -> _Done:
     from ..api import dumps, format_for, load
     from ..eds.decode import mixed_encoding
     from ..files import CannotWrite, write_all
-    from ..model import Severity
+    from ..model.device import blocking_errors
     from ..model.source import capped
     from ..sniff import NotADeviceDescription
     from .common import errors_to_fix, guard, unreadable
@@ -92,7 +94,7 @@ def _format(task: _Task) -> _Done:
         return _Done(EXIT_USAGE, err=[f"{name}: error: cannot read: {unreadable(error)}"])
     except NotADeviceDescription as error:
         return _Done(EXIT_USAGE, err=[f"{name}: error: {error} [{error.code}]"])
-    shown, notes = capped([d for d in device.diagnostics if d.severity is Severity.ERROR])
+    shown, notes = capped(blocking_errors(device))
     done = _Done(err=[d.format() for d in shown] + notes)
     problems = errors_to_fix(device)
     if problems:

@@ -83,7 +83,7 @@ def _read_twice_if_repeated(
 def _report(file: str, encoding_note: str) -> Report:
     report = Report(file)
     if encoding_note:
-        report.warning("EDS100", encoding_note, 1, 1)
+        report.error("EDS100", encoding_note, 1, 1)
     return report
 
 
@@ -266,7 +266,7 @@ def _build(
     device.trailing_comments = stream.trailing
     device.dialect = evidence.dialect(stream.trailing)
     for line, length in stream.long_lines:
-        report.error("EDS001", f"line has {length} characters; CiA 306 allows {ini.MAX_LINE}", line, ini.MAX_LINE + 1)
+        report.warning("EDS001", f"line has {length} characters; CiA 306 allows {ini.MAX_LINE}", line, ini.MAX_LINE + 1)
     build.finish()
     for obj in device.objects.values():
         if len(obj.subs) > 1:
@@ -285,7 +285,7 @@ def _build(
 
 def _merge(earlier: ini.IniSection, section: ini.IniSection, report: Report) -> None:
     """A repeated section's entries join the first one's."""
-    report.warning(
+    report.error(
         "EDS002",
         f"section [{section.name}] given again (first on line {earlier.line}); its keys are merged",
         section.line,

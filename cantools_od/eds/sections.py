@@ -183,7 +183,7 @@ def _repeated(
     offset: int,
 ) -> None:
     """A key given again: warn, and drop the earlier value, whichever form it took."""
-    report.warning(
+    report.error(
         "EDS002",
         f"[{section.name}] {entry.key} given again (first on line {section.line + offset}); the last one counts",
         entry.line,

@@ -125,12 +125,12 @@ def _parse_integer_expr(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
         notes.append(
             (
                 "EDS033",
-                Severity.WARNING,
+                Severity.ERROR,
                 f"{text!r}: $NODEID should come first ($NODEID+n); lely rejects this form",
             )
         )
     elif operands > 2:
-        notes.append(("EDS033", Severity.WARNING, f"{text!r}: python-canopen and lely read one term only"))
+        notes.append(("EDS033", Severity.ERROR, f"{text!r}: python-canopen reads no value and lely rejects it"))
     elif "-" in text:
         notes.append(("EDS033", Severity.ERROR, f"{text!r}: $NODEID may only be added to"))
     if text.count("$") == 1 and "$NODEID" not in text:

@@ -33,7 +33,7 @@ from ..canopennode.profile import (
 from ..model import DataType, Device, Location, NodeIdExpr, Object, ObjectKind, RawValue, Severity, ValueKind, Variable
 from ..model.datatypes import DOMAIN, INDEX_BY_NAME, REAL32, UNSIGNED8
 from . import examples as ex
-from .rules import CANOPENNODE, Context, Finding, rule
+from .rules import CANOPENNODE, Clause, Context, Finding, Placement, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 PROFILE = CANOPENNODE
@@ -76,6 +76,7 @@ type cannot be laid out: the exporter has no C type for it. Fix: give the entry 
 it holds; there is no automatic fix.""",
     "[2000]\nParameterName=Mapping\nObjectType=0x7\nDataType=0x0021\nAccessType=rw",
     fixed="[2000]\nParameterName=Mapping\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "CANopenEditor's exporter has no C type for it"),
 )
 def unsupported_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -99,6 +100,7 @@ as the number of entries; CiA 301 defines it as UNSIGNED8 too. Another type ther
 generated data disagree with what the stack reads. Fix: DataType=0x0005 on sub-index 0.""",
     lambda: "; also: EDS025 (CiA 301 says the same)\n" + _array().replace("0x0005", "0x0007", 1),
     fixed=_array,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the stack reads sub-index 0 as uint8_t"),
 )
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -120,6 +122,7 @@ the same), cannot be represented; the exporter would silently use sub-index 1's.
 elements alike, or declare the object as a RECORD.""",
     lambda: _array().replace("AccessType=rw", "AccessType=ro", 2).replace("AccessType=ro", "AccessType=rw", 2),
     fixed=_array,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the exporter uses sub-index 1's type and attribute for every element"),
 )
 def array_elements(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -157,6 +160,7 @@ sub-indices may have gaps).""",
         "ObjectType=0x9", "ObjectType=0x8", 1
     ),
     fixed=_array,
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "C forbids a zero-length array; the stack finds element n at n-1"),
 )
 def array_shape(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -194,6 +198,7 @@ follows from the index (or set `count_label` in the .canopennode.toml file).""",
         "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n"
         + ex.var(0x1017, "Producer heartbeat time", 0x0006, mapping=0)
     ),
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "CANopen.c stops the build with #error"),
 )
 def required_counts(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
@@ -257,6 +262,7 @@ identifiers. Fix: correct the objects or the
     fixed=lambda: (
         ex.pdo("rx", "0x60400010") + ex.pdo("rx", "0x607A0020", number=2) + ex.CONTROLWORD + ex.TARGET_POSITION
     ),
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "CANopen.c stops the build with #error"),
 )
 def count_limits(ctx: Context) -> Iterator[Finding]:
     counts = _counts(ctx)
@@ -328,6 +334,7 @@ literals (`0.0f`). Fix: write the value in the entry's type.""",
     "; also: EDS030 (the value is not a REAL32)\n"
     + "[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e40\nPDOMapping=0",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1e30\nPDOMapping=0",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "no C spelling for the default"),
 )
 def unstorable_default(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -361,6 +368,10 @@ device needs, or set it at run time in the application.""",
     "DefaultValue=$NODEID+0x700\nPDOMapping=0",
     fixed="[2000]\nParameterName=Reply COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
     "DefaultValue=0x705\nPDOMapping=0",
+    placed=Placement(
+        Clause.PORTABILITY,
+        "`$NODEID` is CiA 306, but the stack adds the node-ID only to its own COB-IDs: the device sees n alone",
+    ),
 )
 def nodeid_elsewhere(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -387,6 +398,9 @@ CANopenEditor keeps the capacity as CO_stringLengthMin in its project; an EDS ca
     fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=drive\n"
     "PDOMapping=0",
     fix_safety="No automatic fix: set `string_length_min` for the entry in `<stem>.canopennode.toml`.",
+    placed=Placement(
+        Clause.PORTABILITY, "an EDS cannot say the capacity; SDO writes fail until the application gives memory"
+    ),
 )
 def string_without_memory(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):
@@ -419,6 +433,7 @@ bits: `pdo_attributes = "canopeneditor"` in the `[stack]` table of the .canopenn
     "[2000]\nParameterName=Status\nObjectType=0x7\nDataType=0x0006\nAccessType=ro\nDefaultValue=0\nPDOMapping=1",
     fixed="[2000]\nParameterName=Status\nObjectType=0x7\nDataType=0x0006\nAccessType=rwr\nDefaultValue=0\nPDOMapping=1",
     fix_safety="No automatic fix: the access type is a design decision; the setting keeps CANopenEditor's bits.",
+    placed=Placement(Clause.DECISION, "CiA 301's PDO attribute, not CANopenEditor's"),
 )
 def pdo_bits_differ(ctx: Context) -> Iterator[Finding]:
     for obj in _objects(ctx):

@@ -31,7 +31,7 @@ from ..model.cia301.pdo import COMM_SUBS, PREDEFINED, RX, TX, Pdo
 from ..model.cia301.slots import Slot, slot
 from . import examples as ex
 from .pdoread import device_pdos, first, int_value, node_ids, with_severity
-from .rules import Context, Finding, Fix, rule
+from .rules import Clause, Context, Finding, Fix, Placement, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
@@ -66,6 +66,7 @@ then be 0; 1 for a 29-bit CAN-ID. An 11-bit COB-ID with higher bits set is not a
 devices refuse it. Checked for PDOs, SYNC, TIME, EMCY and SDO COB-IDs.""",
     lambda: ex.pdo("tx", "0x60410010", number=5, cob="0x80000981") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010", number=5, cob="0x80000181") + ex.STATUSWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "not a CAN-ID: devices refuse it"),
 )
 def check_frame_bits(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -110,6 +111,7 @@ the restricted 180h. The finding then says so and offers `$NODEID+0x180` (unsafe
 changes).""",
     lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x585") + ex.STATUSWORD,
     fixed=lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the PDO collides with a CiA 301 service on the bus"),
 )
 def check_restricted(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -151,6 +153,7 @@ to those services by default. A PDO there collides as soon as a node uses them, 
 priority starves other traffic.""",
     lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x90") + ex.STATUSWORD,
     fixed=lambda: ex.NODE_5 + ex.pdo("tx", "0x60410010", cob="0x185") + ex.STATUSWORD,
+    placed=Placement(Clause.BEYOND_THE_PEERS, "collides as soon as a node uses SYNC, EMCY or TIME"),
 )
 def check_service_ids(ctx: Context) -> Iterator[Finding]:
     ids = node_ids(ctx)
@@ -198,6 +201,7 @@ finding says what it links to and advises nothing. In a CANopenNode project a CO
 base itself (0x180) is what the stack adds the node-ID to (CO_PDO.c); other tools read it as is.""",
     lambda: ex.pdo("tx", "0x60410010", cob="0x181") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(Clause.STYLE, "a literal fits one node-ID; the convention masters rely on"),
 )
 def check_predefined(ctx: Context) -> Iterator[Finding]:
     if ctx.device.is_dcf:
@@ -260,6 +264,10 @@ SDO server, or another one. A disabled one is reported here; a moved one in an E
 DCF here (against the commissioned node-ID).""",
     lambda: ex.sdo_server(rx="0x80000000", tx="0x80000000"),
     fixed=lambda: ex.sdo_server(),
+    placed=Placement(
+        Clause.PORTABILITY,
+        "CANopenNode writes 600h/580h + node-ID whatever the file says; a tool that trusts the file does not",
+    ),
 )
 def check_default_sdo_server(ctx: Context) -> Iterator[Finding]:
     node_id = known_node_id(ctx.device, ctx.options.node_id)
@@ -292,6 +300,7 @@ default COB-ID should be invalid (bit 31 set, e.g. 0x80000000) until a master as
 then disagree. Not checked in DCFs.""",
     lambda: ex.pdo("rx", "0x60400010", number=5, cob="$NODEID+0x1C0") + ex.CONTROLWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010", number=5) + ex.CONTROLWORD,
+    placed=Placement(Clause.PORTABILITY, "`$NODEID` is legal; CANopenNode rebases only PDOs 1-4"),
 )
 def check_extra_pdos_invalid(ctx: Context) -> Iterator[Finding]:
     if ctx.device.is_dcf:
@@ -336,6 +345,7 @@ have.""",
         + ex.STATUSWORD
         + ex.POSITION
     ),
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "two producers on one CAN-ID: arbitration fails"),
 )
 def check_own_collisions(ctx: Context) -> Iterator[Finding]:
     cobs = producers(ctx.device, device_pdos(ctx))
@@ -369,6 +379,7 @@ node: oresat's GPS consumes node 1's TPDO1 on 181h).""",
         + ex.STATUSWORD
         + ex.CONTROLWORD
     ),
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the RPDO never receives: a controller does not receive its own frames"),
 )
 def check_rpdo_on_own_producer(ctx: Context) -> Iterator[Finding]:
     sent = producers(ctx.device, device_pdos(ctx))
@@ -410,6 +421,7 @@ is a decision, not an accident.""",
         + ex.CONTROLWORD
         + ex.TARGET_POSITION
     ),
+    placed=Placement(Clause.DECISION, "CiA 301 allows one producer feeding several RPDOs"),
 )
 def check_shared_rpdo_ids(ctx: Context) -> Iterator[Finding]:
     cobs = [cob for pdo, cob in _pdo_cobs(ctx) if pdo.direction == RX]
@@ -444,6 +456,7 @@ and TPDO records share one table: an RPDO that describes a sub6 and counts it is
         + ex.STATUSWORD
     ),
     fixed=lambda: ex.pdo("tx", "0x60410010", comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "a master reads entries above sub0 and fails (SDO abort)"),
 )
 def check_comm_sub0(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -478,6 +491,7 @@ Inhibit time (sub3) and SYNC start value (sub6) only govern transmission; an RPD
 a non-zero default there has no effect and suggests the record was copied from a TPDO.""",
     lambda: ex.pdo("rx", "0x60400010", comm={3: ("Inhibit time", 0x0006, "rw", 10)}) + ex.CONTROLWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    placed=Placement(Clause.STYLE, "no effect on an RPDO; copied from a TPDO"),
 )
 def check_rpdo_tx_only(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -498,6 +512,7 @@ UNSIGNED32, inhibit time (sub3) and event timer (sub5) are UNSIGNED16. Masters w
 with these sizes; another size makes the SDO download fail.""",
     lambda: ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0007, "rw", 100)}) + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "a master writes the standard size and the SDO download fails"),
 )
 def check_comm_types(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -525,6 +540,7 @@ PDOs. PDOMapping=1 there invites a tool to offer them for mapping.""",
         )
     ),
     fixed=(lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
+    placed=Placement(Clause.STYLE, "invites a tool to offer it for mapping"),
 )
 def check_comm_mappable(ctx: Context) -> Iterator[Finding]:
     for pdo, found in _comm_subs(ctx):
@@ -543,6 +559,7 @@ Transmission types 241 to 251 are reserved by CiA 301; a device answers an SDO d
 with an abort, and its behaviour with one as default is undefined.""",
     lambda: ex.pdo("tx", "0x60410010", tt=245) + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010", tt=1) + ex.STATUSWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device aborts the download of a reserved transmission type"),
 )
 def check_reserved_tt(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -561,6 +578,7 @@ Transmission types 252 (synchronous, RTR only) and 253 (asynchronous, RTR only) 
 TPDO answers a remote request; CiA 301 does not define them for an RPDO.""",
     lambda: ex.pdo("rx", "0x60400010", tt=253) + ex.CONTROLWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010", tt=255) + ex.CONTROLWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "not defined for an RPDO"),
 )
 def check_rpdo_rtr(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -590,6 +608,7 @@ timer. Informational, for valid TPDOs that map something: whether the applicatio
 is not in the EDS.""",
     lambda: ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 0)}) + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010", tt=255, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    placed=Placement(Clause.DECISION, "whether the application raises events is not in the file"),
 )
 def check_event_without_timer(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, timer, _ in _timing(ctx):
@@ -612,6 +631,7 @@ The SYNC start value (sub6) picks the SYNC counter value at which a cyclic synch
 (transmission type 1-240) starts. For any other transmission type the device ignores it.""",
     lambda: ex.pdo("tx", "0x60410010", tt=0, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010", tt=1, comm={6: ("SYNC start value", 0x0005, "rw", 2)}) + ex.STATUSWORD,
+    placed=Placement(Clause.STYLE, "the device ignores it"),
 )
 def check_sync_start(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, _, start in _timing(ctx):
@@ -634,6 +654,7 @@ is sent on SYNC (0-240) or on request (252/253) ignores it, so a non-zero value 
 period the device does not keep.""",
     lambda: ex.pdo("tx", "0x60410010", tt=1, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010", tt=254, comm={5: ("Event timer", 0x0006, "rw", 100)}) + ex.STATUSWORD,
+    placed=Placement(Clause.STYLE, "the device ignores it: a period it does not keep"),
 )
 def check_timer_ignored(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, _, timer, _ in _timing(ctx):
@@ -672,6 +693,7 @@ event timer says; often the units were confused.""",
         )
         + ex.STATUSWORD
     ),
+    placed=Placement(Clause.STYLE, "often confused units"),
 )
 def check_timer_vs_inhibit(ctx: Context) -> Iterator[Finding]:
     for pdo, tt, inhibit, timer, _ in _timing(ctx):

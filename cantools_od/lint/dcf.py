@@ -11,7 +11,7 @@ from ..model.cia301.modules import has_module_section, object_section_name
 from ..model.datatypes import DOMAIN
 from . import examples as ex
 from .common import checked_vars, file_start, given, invalid, where
-from .rules import Context, Finding, rule
+from .rules import Clause, Context, Finding, Placement, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
@@ -38,6 +38,7 @@ these access types and warns.""",
         "DownloadFile=firmware.bin"
     ),
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "lely forces the access type and warns"),
 )
 def file_access(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var, domain in _with_files(ctx):
@@ -79,6 +80,9 @@ DataType 0x000F); other entries have a value of their data type.""",
         "UploadFile=speed.bin"
     ),
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "the file names a DOMAIN's content for an entry that has a value of its own type"
+    ),
 )
 def file_domain(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var, domain in _with_files(ctx):
@@ -101,6 +105,7 @@ or take them for the device's defaults.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nParameterValue=100",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=100\nPDOMapping=0",
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "tools ignore the DCF-only key in an EDS, or take it for a default"),
 )
 def dcf_keys(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -124,6 +129,7 @@ NodeID, and `$NODEID` values are resolved with it. Without it the DCF's COB-IDs 
 lely dcfchk fails with `$NODEID not defined` unless a node-ID is given on the command line.""",
     "[DeviceComissioning]\nNodeName=Drive\nBaudrate=500",
     fixed="[DeviceComissioning]\nNodeID=5\nNodeName=Drive\nBaudrate=500",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "lely dcfchk fails with `$NODEID not defined`; the COB-IDs are unknown"),
 )
 def dcf_node_id(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -147,6 +153,10 @@ that configures from the DCF fails on the write (abort 0601 0002h), and one that
 as the device's state reads a value the device never has.""",
     lambda: ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=8\n",
     fixed=lambda: ex.NODE_5 + ex.var(0x2000, "Build", 0x0007, "const", 7, 0) + "ParameterValue=7\n",
+    placed=Placement(
+        Clause.DEVICE_MISBEHAVES,
+        "a configuring master's write fails (abort 0601 0002h); the device holds another value",
+    ),
 )
 def const_parameter_value(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
@@ -167,6 +177,7 @@ CANopen node-IDs are 1..127. lely also writes 255 for "not configured", and CANo
 `<deviceCommissioning nodeID="0">` in a device description (.xdd): both are EDS063.""",
     "[DeviceComissioning]\nNodeID=128",
     fixed="[DeviceComissioning]\nNodeID=127",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "no CANopen node can have this node-ID"),
 )
 def node_id_range(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning
@@ -187,6 +198,7 @@ CANopenEditor `<deviceCommissioning nodeID="0">` into every XDD device descripti
 `$NODEID` values stay unresolved.""",
     "[DeviceComissioning]\nNodeID=0xFF",
     fixed="[DeviceComissioning]\nNodeID=5",
+    placed=Placement(Clause.DECISION, "the node-ID is assigned later (LSS)"),
 )
 def node_id_unset(ctx: Context) -> Iterator[Finding]:
     section = ctx.device.commissioning
@@ -235,6 +247,9 @@ one written with them is accepted); [ConnectedModules] lists module numbers 1..n
     "ProductName=Input module",
     fixed="; also: DIA012 (any module section)\n[SupportedModules]\nNrOfEntries=1\n\n[M1ModuleInfo]\n"
     "ProductName=Input module",
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "module sections that do not add up: CANopenEditor reads other modules"
+    ),
 )
 def modules(ctx: Context) -> Iterator[Finding]:
     sections = {raw.name.lower(): raw for raw in ctx.device.module_sections}

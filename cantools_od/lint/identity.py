@@ -20,7 +20,7 @@ from ..model.cia301.objects import (
 from ..model.cia301.pdo import RX, TX, count_pdos, is_mapping
 from . import examples as ex
 from .common import file_start, present
-from .rules import Context, Finding, Fix, rule
+from .rules import Clause, Context, Finding, Fix, Placement, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -44,6 +44,7 @@ v4.0, 1018h (identity object). Masters read them during boot-up to identify the 
 without them cannot describe a conforming device.""",
     "; no [1018]\n[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1001",
     fixed=lambda: "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n" + ex.identity(),
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "a master's boot-up reads 1000h/1001h/1018h and fails without them"),
 )
 def mandatory_objects(ctx: Context) -> Iterator[Finding]:
     listing = ctx.device.mandatory_objects
@@ -71,6 +72,7 @@ holds the real number: which side is right only the device tells.""",
     "[DeviceInfo]\nRevisionNumber=0\n\n[1018sub3]\nParameterName=Revision number\nDataType=0x0007\n"
     "AccessType=ro\nDefaultValue=0x00010000",
     fixed=("[DeviceInfo]\nRevisionNumber=0x3"),
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "a master compares one number or the other with the device"),
 )
 def identity(ctx: Context) -> Iterator[Finding]:
     info, obj = ctx.device.device_info, ctx.device.objects.get(IDENTITY)
@@ -131,6 +133,7 @@ Error: the LSS master looks for a device that does not exist.""",
         )
     ),
     fix_safety="No automatic fix (which number is right is known only on the device).",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "an LSS master addresses the device by the other number"),
 )
 def serial_number(ctx: Context) -> Iterator[Finding]:
     section, obj = ctx.device.commissioning, ctx.device.objects.get(IDENTITY)
@@ -153,6 +156,7 @@ objects the device has, the ones CompactPDO implies included. Tools size their P
 these keys; a count that disagrees with the objects means a PDO is missing or the key is stale.""",
     (lambda: "[DeviceInfo]\nNrOfRXPDO=2\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
     fixed=(lambda: "[DeviceInfo]\nNrOfRXPDO=1\n\n" + ex.pdo("rx", "0x60400010") + ex.CONTROLWORD),
+    placed=Placement(Clause.STYLE, "tools size their PDO tables from the keys; a stale count"),
 )
 def pdo_counts(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -182,6 +186,7 @@ def _fix_pdo_count(field: str, direction: str) -> Callable[[Device], None]:
 either refuse to remap or remap a device that rejects it.""",
     (lambda: "[DeviceInfo]\nGranularity=0\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
     fixed=(lambda: "[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD),
+    placed=Placement(Clause.BEYOND_THE_PEERS, "configuration tools refuse to remap, or remap a device that rejects it"),
 )
 def static_mapping(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -207,6 +212,7 @@ Granularity is the PDO mapping granularity in bits: 0 (mapping not modifiable) o
 [DeviceInfo]); a classic CAN frame holds 64 bits.""",
     "[DeviceInfo]\nGranularity=128",
     fixed=("[DeviceInfo]\nGranularity=8"),
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "a classic CAN frame holds 64 bits: no device maps at that granularity"),
 )
 def granularity_range(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -224,6 +230,7 @@ def granularity_range(ctx: Context) -> Iterator[Finding]:
 `BaudRate_<rate>=1`; otherwise the node is configured for a bit rate it cannot use.""",
     "[DeviceInfo]\nBaudRate_250=1\nBaudRate_500=0\n\n[DeviceComissioning]\nNodeID=5\nBaudrate=500",
     fixed="[DeviceInfo]\nBaudRate_250=1\nBaudRate_500=1\n\n[DeviceComissioning]\nNodeID=5\nBaudrate=500",
+    placed=Placement(Clause.STYLE, "the commissioned rate is one the device does not support"),
 )
 def commissioned_rate(ctx: Context) -> Iterator[Finding]:
     section, rates = ctx.device.commissioning, ctx.device.device_info.baud_rates
@@ -251,6 +258,7 @@ put on any network; usually the keys are missing or misspelt (`Baudrate_500`).""
         "[DeviceInfo]\nVendorName=Example\nBaudRate_10=0\nBaudRate_20=0\nBaudRate_50=0\nBaudRate_125=0\n"
         "BaudRate_250=0\nBaudRate_500=1\nBaudRate_800=0\nBaudRate_1000=0"
     ),
+    placed=Placement(Clause.STYLE, "usually a missing or misspelt BaudRate key"),
 )
 def no_rates(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info

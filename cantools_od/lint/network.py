@@ -29,7 +29,7 @@ from ..model.cia301.slots import slot
 from ..model.source import location
 from . import examples as ex
 from .pdoread import with_severity
-from .rules import Context, Finding, LintOptions, rule
+from .rules import Clause, Context, Finding, LintOptions, Placement, rule
 
 if TYPE_CHECKING:
     from ..network.plan import NetworkPlan, PlannedPdo
@@ -66,6 +66,7 @@ a SYNC producer.""",
     + ex.NODE_5.replace("NodeID=5", "NodeID=6")
     + "; $ cantools-od lint --network a.dcf b.dcf",
     fix_safety="No automatic fix: which node changes its node-ID or its COB-IDs is the integrator's decision.",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "nodes on one network collide or read each other's PDOs wrong"),
 )
 def check_single_device(ctx: Context) -> Iterable[Finding]:
     """COB011 needs the whole network: `lint_network` reports it, a single file has nothing to say."""

@@ -12,7 +12,7 @@ from ..model.cia301.objects import DATA_TYPE_AREA, ERROR_HISTORY
 from ..model.cia301.pdo import PDO_AREA
 from ..model.datatypes import STANDARD_TYPES, STATIC_TYPE_AREA, UNSIGNED8
 from .common import checked_vars, explicit_objects, explicit_vars, given, kind_unknown, where
-from .rules import Context, Finding, Fix, rule
+from .rules import Clause, Context, Finding, Fix, Placement, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -69,6 +69,7 @@ whose access type it lost, which a master then cannot configure.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     per_object=True,
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen raises NoOptionError, lely dcfchk KeyError: 'DataType'"),
 )
 def missing_keys(ctx: Context) -> Iterator[Finding]:
     xml = ctx.device.file_format != "eds"
@@ -116,6 +117,9 @@ passes over the header's keys.""",
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     fix_safety="No automatic fix: delete the key.",
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely dcfchk: the key is not supported there; a tool may take it at its word"
+    ),
 )
 def forbidden_keys(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
@@ -162,6 +166,7 @@ the wrong number of entries or reject the file.""",
     "[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=3\n\n" + _PAIR_SUBS,
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     per_object=True,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "lely dcfchk: missing sub-objects; tools size the object otherwise"),
 )
 def sub_number(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -199,6 +204,10 @@ sections, which would describe the same sub-objects twice.""",
     "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=4\nSubNumber=5",
     fixed="[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=4",
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE,
+        "lely dcfchk rejects SubNumber with CompactSubObj; the sub-objects are described twice",
+    ),
 )
 def compact_misuse(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -238,6 +247,10 @@ reserved bits switch on lely-internal behaviour.""",
         "PDOMapping=0\nObjFlags=0x0"
     ),
     per_object=True,
+    placed=Placement(
+        Clause.DEVICE_MISBEHAVES,
+        "lely ORs ObjFlags into its flag word: reserved bits switch on lely-internal behaviour",
+    ),
 )
 def obj_flags(ctx: Context) -> Iterator[Finding]:
     for obj, subindex, var in checked_vars(ctx):
@@ -266,6 +279,9 @@ with another type, they reject the object or read the wrong count.""",
     ),
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely dcfchk: DataType should be UNSIGNED8; tools read the wrong count"
+    ),
 )
 def sub0_type(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -311,6 +327,9 @@ objects whose sub0 is writable, where sub0 counts the valid entries.""",
         "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "the upper sub-objects are hidden from a master that reads sub-index 0"
+    ),
 )
 def sub0_value(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -356,6 +375,9 @@ SubNumber and is never described in an EDS.""",
     ),
     fixed="[2000]\nParameterName=Pair\nObjectType=0x9\nSubNumber=2\n\n" + _PAIR_SUBS,
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely dcfchk: invalid sub-index; FFh is the object's structure, never a value"
+    ),
 )
 def sub_ff(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -386,6 +408,7 @@ Tools and generated code store an ARRAY as one C array.""",
         "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "one C array in generated code: the elements' own types are lost"),
 )
 def array_types(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -426,6 +449,7 @@ canmatrix and lely fail.""",
     "[2000]\nParameterName=Gain\nDataType=0x0040\nAccessType=rw",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     per_object=True,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "python-canopen falls back to DOMAIN; lely and canmatrix fail"),
 )
 def undefined_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
@@ -452,6 +476,10 @@ else, and nothing else belongs there (CiA 301, object dictionary index areas). I
     fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: move the definition below 1000h, or use the basic type itself as here.",
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE,
+        "the data-type area holds data types only: peers read the object as a type or drop it",
+    ),
 )
 def type_area(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):

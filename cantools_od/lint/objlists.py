@@ -11,7 +11,7 @@ from ..model.cia301.objects import MANDATORY as MANDATORY_INDICES
 from ..model.device import OBJECT_LISTS, object_list_home
 from ..model.source import location
 from .common import file_start
-from .rules import Context, Finding, Fix, rule
+from .rules import Clause, Context, Finding, Fix, Placement, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -83,6 +83,9 @@ reported by EDS011.""",
         "ParameterName=Http drive catalog address\nObjectType=0x7\nDataType=0x0009\nAccessType=ro\n"
         "DefaultValue=x\nPDOMapping=0"
     ),
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "the list announces an object the file does not describe (lely dcfchk: not found)"
+    ),
 )
 def listed_absent(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in _listings(ctx):
@@ -115,6 +118,9 @@ Objects implied by CompactPDO need not be listed.""",
     fixed=(
         "[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n\n[2000]\nParameterName=Speed\n"
         "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely follows the lists and leaves it out; python-canopen imports every section"
     ),
 )
 def unlisted(ctx: Context) -> Iterator[Finding]:
@@ -153,16 +159,18 @@ def _ensure(device: Device, name: str) -> ObjectList:
 
 @rule(
     "EDS019",
-    W,
+    E,
     "Object list section missing",
     """
 An EDS has all three object lists, even when one is empty (`SupportedObjects=0`). Objects that
 a missing list would hold are reported as unlisted (EDS012); this rule reports the missing
-section itself.""",
+section itself. Error: lely's dcfchk cannot load such a file (`KeyError: 'ManufacturerObjects'`),
+though python-canopen does.""",
     "; no [OptionalObjects], [ManufacturerObjects]\n"
     "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
     fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n\n[OptionalObjects]\n"
     "SupportedObjects=0\n\n[ManufacturerObjects]\nSupportedObjects=0",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "lely dcfchk raises KeyError on the missing list"),
 )
 def missing_list(ctx: Context) -> Iterator[Finding]:
     for name in LISTS:
@@ -204,6 +212,9 @@ Fix (unsafe, shown only): move the entry; it renumbers both lists.""",
         "SupportedObjects=1\n1=0x1017\n\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\n"
         "DataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely dcfchk: object is not mandatory; tools misjudge which objects must exist"
+    ),
 )
 def mandatory_list(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in _listings(ctx):
@@ -235,6 +246,9 @@ the object is misplaced or its index is.""",
         "[OptionalObjects]\nSupportedObjects=0\n\n[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n\n"
         "[2000]\nParameterName=Vendor value\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
         "DefaultValue=0\nPDOMapping=0"
+    ),
+    placed=Placement(
+        Clause.PORTABILITY, "lely dcfchk warns; real devices place manufacturer objects in the profile area"
     ),
 )
 def area(ctx: Context) -> Iterator[Finding]:
@@ -273,6 +287,7 @@ object lists. lely dcfchk rejects them there ("data type objects are not support
     "AccessType=ro\n\n[OptionalObjects]\nSupportedObjects=1\n1=0x0040",
     fixed="; also: DIA005 (every DEFTYPE)\n[0040]\nParameterName=Unsigned32 alias\nObjectType=0x5\nDataType=0x0007\n"
     "AccessType=ro\n\n[OptionalObjects]\nSupportedObjects=0",
+    placed=Placement(Clause.PORTABILITY, "lely dcfchk: data type objects are not supported in the lists"),
 )
 def data_type_listed(ctx: Context) -> Iterator[Finding]:
     for name, found, position, index in _listings(ctx):
@@ -283,11 +298,12 @@ def data_type_listed(ctx: Context) -> Iterator[Finding]:
 
 @rule(
     "EDS016",
-    E,
+    W,
     "Object listed more than once",
     """
 Each object appears once across the three object lists. A second entry inflates
-SupportedObjects and leaves tools unsure which list is meant.""",
+SupportedObjects and leaves tools unsure which list is meant. Warning: python-canopen and lely's
+dcfchk read the same objects either way.""",
     (
         "[OptionalObjects]\nSupportedObjects=2\n1=0x1017\n2=0x1017\n\n[1017]\n"
         "ParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
@@ -297,6 +313,7 @@ SupportedObjects and leaves tools unsure which list is meant.""",
         "[OptionalObjects]\nSupportedObjects=1\n1=0x1017\n\n[1017]\nParameterName=Producer heartbeat time\n"
         "ObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    placed=Placement(Clause.STYLE, "python-canopen and lely dcfchk read the same objects; the count is inflated"),
 )
 def listed_twice(ctx: Context) -> Iterator[Finding]:
     seen: dict[int, tuple[str, int]] = {}
@@ -351,6 +368,9 @@ exactly that many entries, so a wrong count drops objects or fails on a missing 
         "ParameterName=Communication cycle period\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely dcfchk: too many entries; tools read exactly SupportedObjects entries"
     ),
 )
 def supported_count(ctx: Context) -> Iterator[Finding]:
@@ -413,6 +433,9 @@ For example, `12=0x3078`, `12=0x3079` with no 13 becomes `12=0x3078`, `13=0x3079
         "ParameterName=Communication cycle period\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\n"
         "PDOMapping=0\n[1017]\nParameterName=Producer heartbeat time\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
+    ),
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely dcfchk: entry missing; tools read keys 1..SupportedObjects only"
     ),
 )
 def numbering(ctx: Context) -> Iterator[Finding]:

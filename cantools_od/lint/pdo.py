@@ -11,7 +11,7 @@ from ..model.cia301.slots import Slot
 from ..model.datatypes import BOOLEAN
 from . import examples as ex
 from .pdoread import device_pdos, dummies, length_fix, mapped_objects, named, with_severity
-from .rules import Context, Finding, rule
+from .rules import Clause, Context, Finding, Placement, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -29,6 +29,7 @@ when it is sent, the mapping record (1600h/1A00h + n - 1) what it carries. One w
 leaves the PDO unusable; configuration tools cannot set it up.""",
     lambda: ex.pdo("rx", "0x60400010", parts="comm") + ex.CONTROLWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "a configuration tool cannot set up half a PDO"),
 )
 def check_pairs(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -60,6 +61,7 @@ for the mapping, whose entries all share one type; anything else is not a PDO re
         + ex.STATUSWORD
     ),
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(Clause.PORTABILITY, "the entries read alike; the object type is not CiA 301's"),
 )
 def check_record_kind(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -90,6 +92,7 @@ file leaves out entirely, never a part of one.""",
         + ex.pdo("rx", parts="map")
     ),
     fixed=lambda: ex.pdo("rx"),
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "a PDO described in part: CompactPDO does not fill the rest"),
 )
 def check_mandatory_subs(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -120,6 +123,7 @@ and bit length. Another type cannot hold an entry; a write-only sub0 cannot be r
         ex.pdo("tx", parts="comm")
         + ex.record(0x1A00, "TPDO1 mapping parameter", {0: ("Number of mapped objects", 0x0005, "rw", 0)})
     ),
+    placed=Placement(Clause.STYLE, "another type cannot hold an entry; tools read the type as written"),
 )
 def check_mapping_types(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -153,6 +157,7 @@ disagree about what the PDO carries. FEh and FFh mark multiplexed PDOs (SAM-/DAM
 not counts.""",
     lambda: ex.pdo("rx", "0x60400010", count=2) + ex.CONTROLWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device and the tools disagree about what the PDO carries"),
 )
 def check_count(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -181,6 +186,7 @@ nothing, and devices reject it ("hole in mapping"). Lower sub0 or fill the entry
 once per PDO: at sub0 when every counted entry is 0, else at the first empty entry.""",
     lambda: ex.pdo("tx", "0x00000000", "0x60410010") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "devices reject a hole in the mapping"),
 )
 def check_holes(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -215,6 +221,7 @@ neither the device nor a connected module creates: that entry is a warning (the 
 the mapping there), the entries after it are not checked.""",
     lambda: ex.pdo("rx", "0x21000010"),
     fixed=lambda: ex.pdo("rx", "0x21000010") + ex.var(0x2100, "Setpoint", 0x0006, "rw"),
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "downloading the mapping fails (abort 0602 0000h)"),
 )
 def check_exists(ctx: Context) -> Iterator[Finding]:
     modular = supports_modules(ctx.device)
@@ -245,6 +252,7 @@ A VAR object has only sub-index 0; a mapping entry that gives it another sub-ind
 nothing. Usually the entry should end in 00 before the length byte (0x60400010).""",
     lambda: ex.pdo("rx", "0x60400110") + ex.CONTROLWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the entry names nothing: the mapping fails on the device"),
 )
 def check_var_subindex(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, obj, _ in mapped_objects(ctx):
@@ -265,6 +273,7 @@ Only objects with PDOMapping=1 may be mapped (a missing key means 0). A device r
 (abort 0604 0041h), so the default mapping cannot be restored.""",
     lambda: ex.pdo("tx", "0x60410010") + ex.var(0x6041, "Statusword", 0x0006, "ro", mapping=0),
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device refuses the mapping (abort 0604 0041h)"),
 )
 def check_mappable(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, _, var in mapped_objects(ctx):
@@ -287,6 +296,7 @@ TPDO is reported as a warning. CANopenEditor v4.0 wrote XDD access words inverte
 maps such an entry by its PDOmapping, and the finding says so.""",
     lambda: ex.pdo("rx", "0x60410010") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("rx", "0x60400010") + ex.CONTROLWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "an RPDO writes a read-only object: the device refuses the mapping"),
 )
 def check_direction(ctx: Context) -> Iterator[Finding]:
     for pdo, entry, _, var in mapped_objects(ctx):
@@ -324,6 +334,10 @@ BOOLEAN mapped as 8 bits, as CANopenNode stores it, is only a warning: such a de
 byte.""",
     lambda: ex.pdo("tx", "0x60410008") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE,
+        "a receiver that trusts the entry reads the wrong bits (abort 0604 0041h on the device)",
+    ),
 )
 def check_length(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -356,6 +370,7 @@ The mapped entries of a PDO travel in one CAN frame: at most 64 bits on classic 
 with CAN FD (`--can-fd`). A device refuses a longer mapping (abort 0604 0042h).""",
     lambda: ex.pdo("tx", "0x60640020", "0x606C0020", "0x60410010") + ex.POSITION + ex.VELOCITY + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60640020", "0x606C0020") + ex.POSITION + ex.VELOCITY,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device refuses a longer mapping (abort 0604 0042h)"),
 )
 def check_total(ctx: Context) -> Iterator[Finding]:
     limit = ctx.options.max_pdo_bits
@@ -379,6 +394,7 @@ mapping). An entry off that grid cannot be configured on the device. Reported on
 Granularity, naming the first entry off the grid: either the key or the mapping is wrong.""",
     (lambda: "[DeviceInfo]\nGranularity=8\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
     fixed=(lambda: "[DeviceInfo]\nGranularity=1\n\n" + ex.pdo("tx", "0x20000001") + ex.var(8192, "Ready", 1, "ro")),
+    placed=Placement(Clause.STYLE, "either Granularity or the mapping is wrong; the file does not say which"),
 )
 def check_granularity(ctx: Context) -> Iterator[Finding]:
     grain = ctx.device.device_info.granularity
@@ -404,6 +420,7 @@ Mapping one object twice in a PDO sends (or writes) the same value twice; device
 a "duplicate map". It is usually a copy-and-paste slip in the default mapping.""",
     lambda: ex.pdo("tx", "0x60410010", "0x60410010") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(Clause.STYLE, "usually a copy-and-paste slip; the same value is sent twice"),
 )
 def check_duplicates(ctx: Context) -> Iterator[Finding]:
     for pdo in device_pdos(ctx):
@@ -448,6 +465,9 @@ are ignored.""",
             + ex.TARGET_POSITION
         )
     ),
+    placed=Placement(
+        Clause.STYLE, "in a DCF the value races between two RPDOs; nothing is read otherwise, and sometimes it is meant"
+    ),
 )
 def check_shared_rpdo_objects(ctx: Context) -> Iterator[Finding]:
     if not ctx.device.is_dcf:
@@ -488,6 +508,7 @@ cannot be dummies. `gen` refuses the same entries (GEN001), so a mapping lint re
 turned into code.""",
     lambda: ex.pdo("rx", "0x00090008"),
     fixed=lambda: ex.pdo("rx", "0x00050008"),
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "a receiver cannot skip bits of a type without fixed size"),
 )
 def check_dummy_shape(ctx: Context) -> Iterator[Finding]:
     for pdo, entry in dummies(ctx):
@@ -516,6 +537,7 @@ dummy cannot be downloaded.""",
         )
         + ex.pdo("rx", "0x00050008")
     ),
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device refuses a dummy its [DummyUsage] does not enable"),
 )
 def check_dummy_usage(ctx: Context) -> Iterator[Finding]:
     usage = ctx.device.dummy_usage
@@ -541,6 +563,7 @@ device built with it (the canopennode profile, or a file CANopenEditor wrote) th
 warning.""",
     lambda: ex.pdo("tx", "0x00050008", "0x60410010") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "CiA 301 gives a TPDO no dummy: the device would invent the data"),
 )
 def check_dummy_in_tpdo(ctx: Context) -> Iterator[Finding]:
     for pdo, entry in dummies(ctx):
@@ -565,6 +588,7 @@ and gen all read it that way (PDO045, PDO046 and GEN001 follow); clearing the fl
 the author.""",
     lambda: "; also: PDO045, PDO046 (the length it reads)\n" + ex.pdo("tx", "0x60410090") + ex.STATUSWORD,
     fixed=lambda: ex.pdo("tx", "0x60410010") + ex.STATUSWORD,
+    placed=Placement(Clause.PORTABILITY, "a vendor's private flag; every peer reads the whole byte as the length"),
 )
 def check_length_flag(ctx: Context) -> Iterable[Finding]:
     for pdo in device_pdos(ctx):

@@ -28,7 +28,7 @@ from ..model.cia301.pdo import DUMMY_TYPES
 from ..model.datatypes import BASIC_TYPE_RANGE
 from ..model.source import location
 from .common import checked_vars, where
-from .rules import Context, Finding, rule
+from .rules import Clause, Context, Finding, Placement, rule
 from .syntax import EXTENSION_KEYS, RESERVED_DEVICE_INFO, spellings
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
@@ -41,14 +41,16 @@ _TEXT_FIELDS = (*_STRING_FIELDS, ("DefaultValue", "default"), ("ParameterValue",
 
 @rule(
     "DIA001",
-    W,
+    E,
     "[DummyUsage] lacks one of Dummy0001..Dummy0007",
     """
 python-canopen reads Dummy0001 to Dummy0007 from [DummyUsage] and raises an exception when one
 is missing, although CiA 306 treats a missing key as "not supported" (sparse lely DCFs fail
-this way). Write all seven keys, with 0 where a type is not usable as a dummy.""",
+this way). Error, though the file is right by CiA 306: python-canopen cannot load it at all
+(NoOptionError). Write all seven keys, with 0 where a type is not usable as a dummy.""",
     "[DummyUsage]\nDummy0005=1\nDummy0006=1\nDummy0007=1",
     fixed="[DummyUsage]\nDummy0001=0\nDummy0002=0\nDummy0003=0\nDummy0004=0\nDummy0005=1\nDummy0006=1\nDummy0007=1",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen raises NoOptionError: No option 'Dummy0001'"),
 )
 def dummy_usage(ctx: Context) -> Iterator[Finding]:
     usage = ctx.device.dummy_usage
@@ -74,6 +76,7 @@ value is read with its quotes everywhere but in lely.""",
         "DefaultValue=Drive\nPDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "lely strips the quotes, the others keep them"),
 )
 def quoted_strings(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -102,6 +105,7 @@ value.""",
     "[DeviceInfo]\nVendorName=Lely Industries N.V.\n[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\n"
     "DefaultValue=0x3FC00000",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1.5\nPDOMapping=0",
+    placed=Placement(Clause.PORTABILITY, "lely's form: python-canopen drops it, CANopenNode copies it as an integer"),
 )
 def real_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -133,6 +137,7 @@ mapping objects). python-canopen turns such a RECORD into an empty record and ig
     "[2000]\nParameterName=Pair\nObjectType=0x9\nDataType=0x0007\nAccessType=rw\nCompactSubObj=2",
     fixed="[2000]\nParameterName=Pair\nObjectType=0x8\nDataType=0x0007\nAccessType=rw\nCompactSubObj=2",
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "lely's form: python-canopen reads an empty record"),
 )
 def compact_record(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -154,6 +159,7 @@ typed by them become unreadable there.""",
     fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: type the entries by the basic types and delete the definition.",
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "CiA 306, but lely dcfchk rejects it and python-canopen skips it"),
 )
 def type_definitions(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -177,6 +183,7 @@ CANopenNode's code generators. Reported once per file.""",
     fixed=(
         "[2000]\nParameterName=Counter\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
+    placed=Placement(Clause.DECISION, "only CANopenNode's generators read these comments"),
 )
 def extension_comments(ctx: Context) -> Iterator[Finding]:
     found: list[Section] = []
@@ -206,6 +213,7 @@ mangled names. VISIBLE_STRING values are checked by EDS038.""",
         "DefaultValue=0\nPDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "tools guess the encoding differently"),
 )
 def non_ascii(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -242,6 +250,9 @@ not support it. Undefined custom types are reported by EDS080.""",
     fixed="[2000]\nParameterName=Setting\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: type the entry by the basic type the definition stands for.",
     per_object=True,
+    placed=Placement(
+        Clause.PORTABILITY, "CiA 306, but python-canopen falls back to DOMAIN and lely does not support it"
+    ),
 )
 def custom_types(ctx: Context) -> Iterator[Finding]:
     objects = ctx.device.objects
@@ -281,6 +292,7 @@ generators (and CANopenEditor, #55) drop one of them.""",
         "PDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(Clause.DECISION, "generated structures and CANopenEditor drop one of the members"),
 )
 def duplicate_names(ctx: Context) -> Iterator[Finding]:
     for obj in ctx.device.objects.values():
@@ -309,6 +321,7 @@ they are not CiA 306 keys, and lely dcfchk rejects them as invalid entries.""",
         "DefaultValue=0\nPDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "python-canopen's key: lely dcfchk rejects it as an invalid entry"),
 )
 def extension_keys(ctx: Context) -> Iterator[Finding]:
     for owner, subindex, var in checked_vars(ctx):
@@ -328,6 +341,7 @@ ExtendedBootUpMaster and ExtendedBootUpSlave in [DeviceInfo] for compatibility; 
 valid, but lely dcfchk wrongly rejects them as unknown keys.""",
     "[DeviceInfo]\nProductVersion=1",
     fixed=("[DeviceInfo]\nVendorName=Example"),
+    placed=Placement(Clause.DECISION, "CiA 306's compatibility keys; lely dcfchk wrongly rejects them"),
 )
 def reserved_keys(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -348,6 +362,7 @@ them, so the objects of the modules are missing there. Reported once per file.""
     "[SupportedModules]\nNrOfEntries=1\n[M1ModuleInfo]\nProductName=Input module",
     fixed="; the module's objects described as the device's own\n[2000]\nParameterName=Input module inputs\n"
     "ObjectType=0x7\nDataType=0x0005\nAccessType=ro\nDefaultValue=0\nPDOMapping=1",
+    placed=Placement(Clause.DECISION, "CiA 306, read only by CANopenEditor"),
 )
 def module_sections(ctx: Context) -> Iterator[Finding]:
     sections = ctx.device.module_sections
@@ -367,6 +382,7 @@ CiA 306 does not specify how TIME_OF_DAY and TIME_DIFFERENCE values are written.
     "[2000]\nParameterName=Start\nDataType=0x000C\nAccessType=rw\nDefaultValue=365 43200000",
     fixed="[2000]\nParameterName=Start\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "CiA 306 has no form: python-canopen concatenates lely's `days ms`"),
 )
 def time_values(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -396,6 +412,7 @@ and CANopenNode drop or reject such limits.""",
         "DefaultValue=$NODEID+0x580\nPDOMapping=0\nLowLimit=0x581"
     ),
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "CiA 306 allows it; python-canopen and CANopenNode drop such limits"),
 )
 def nodeid_limits(ctx: Context) -> Iterator[Finding]:
     for owner, subindex, var in checked_vars(ctx):
@@ -407,14 +424,16 @@ def nodeid_limits(ctx: Context) -> Iterator[Finding]:
 
 @rule(
     "DIA015",
-    W,
+    E,
     "Empty PDOMapping",
     """
 `PDOMapping=` without a value means 0 in CiA 306 (an empty entry equals a missing one), but
-python-canopen fails on it (`int('')`, canopen #385). Write 0 or leave the key out.""",
+python-canopen fails on it (`int('')`, canopen #385). Error, though the file is right by CiA 306:
+python-canopen cannot load it at all. Write 0 or leave the key out.""",
     "[2000]\nParameterName=Speed\nDataType=0x0006\nAccessType=rw\nPDOMapping=",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     per_object=True,
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen raises ValueError on int('')"),
 )
 def empty_pdo_mapping(ctx: Context) -> Iterator[Finding]:
     for owner, subindex, var in checked_vars(ctx):
@@ -438,6 +457,7 @@ unknown option and the lely code generator drops it. Reported once per file.""",
         "[2000]\nParameterName=Serial number\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
         "DefaultValue=0\nPDOMapping=0"
     ),
+    placed=Placement(Clause.DECISION, "lely swaps bits 0 and 1, python-canopen keeps it as an option"),
 )
 def obj_flags(ctx: Context) -> Iterator[Finding]:
     found = [
@@ -467,6 +487,9 @@ a blank, so those tools read a truncated name or string. Reported once per file.
     fixed=(
         "[2000]\nParameterName=Motor 1 speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\n"
         "DefaultValue=0\nPDOMapping=0"
+    ),
+    placed=Placement(
+        Clause.PORTABILITY, "right by CiA 306; lely and python-canopen cut the text at the comment character"
     ),
 )
 def comment_characters(ctx: Context) -> Iterator[Finding]:
@@ -510,6 +533,7 @@ it did not read before).""",
     ("[DeviceInfo]\nNrOfRxPDO=0"),
     fixed=("[DeviceInfo]\nNrOfRXPDO=0"),
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "right by CiA 306; python-canopen looks names up case-sensitively"),
 )
 def key_spelling(ctx: Context) -> Iterator[Finding]:
     for spelling in spellings(ctx):
@@ -581,6 +605,7 @@ or delete the key.""",
     "[DeviceInfo]\nVendorName=Acme\nVendorNumber=\nProductName=Widget",
     fixed="[DeviceInfo]\nVendorName=Acme\nProductName=Widget",
     fix_safety="No automatic fix: only the vendor knows the number; deleting the key loses nothing.",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen raises ValueError on int('')"),
 )
 def empty_device_info_number(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -605,6 +630,7 @@ knows; write it in decimal or as 0x hex.""",
     "[DeviceInfo]\nVendorName=Acme\nProductNumber=02",
     fixed="[DeviceInfo]\nVendorName=Acme\nProductNumber=2",
     fix_safety="No automatic fix: CiA 306 says 6209, the author probably meant 14101.",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen and lely dcfchk raise on the octal form"),
 )
 def octal_device_info_number(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.device_info
@@ -630,6 +656,7 @@ Error, though the file is right by CiA 306: python-canopen cannot load it at all
     "[Comments]\nLines=2\nLine1=First\nline2=Second",
     fixed="[Comments]\nLines=2\nLine1=First\nLine2=Second",
     fix_safety="No automatic fix: write the key as `Lines` or `Line<n>`.",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen raises NoOptionError"),
 )
 def comments_key_case(ctx: Context) -> Iterator[Finding]:
     comments = ctx.device.comments

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from ..model import Severity
 from ..model.datatypes import STANDARD_TYPES
 from . import examples as ex
-from .rules import declare
+from .rules import Clause, Placement, declare
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 U16, U32 = (STANDARD_TYPES[n].index for n in (6, 7))  # the data types of the examples' entries
@@ -41,14 +41,14 @@ def _example(port: int, device: str, described: str, probe: str = "", script: st
 
 
 def _declare(code: str, severity: Severity, summary: str, why: str, port: int, device: Made, described: Made,
-             fix: str, probe: str = "", script: str = "") -> None:  # fmt: skip
+             fix: str, probe: str = "", script: str = "", *, placed: Placement) -> None:  # fmt: skip
     """A probe code; its fixed example probes the device with the description it serves (and no script). The
     examples are made when read, not when lint imports this module."""
     declare(
         code, severity, summary, f"{why.strip()}\n\n{_PROBE}",
         lambda: _example(port, device(), described(), probe, script), family="probe",
         fixed=lambda: _example(port + 100, described(), described(), probe),
-        fix_safety=f"No automatic fix: {fix}", refs="CiA 301 §7.2.4.3.17 (SDO abort codes)",
+        fix_safety=f"No automatic fix: {fix}", refs="CiA 301 §7.2.4.3.17 (SDO abort codes)", placed=placed,
     )  # fmt: skip
 
 
@@ -63,6 +63,7 @@ The description lists an entry the device does not have: its read aborts with 06
     _speed,
     lambda: _speed() + ex.var(0x2001, "Torque", U16, "rw", 0, 0),
     "remove the entry from the description, or implement it in the firmware.",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "a master configuring the entry fails on the device"),
 )
 _declare(
     "PRB002",
@@ -76,6 +77,9 @@ built from the description then fails (abort 0607 0010h) or reads the wrong byte
     _speed,
     lambda: _speed().replace("DataType=0x0007", "DataType=0x0006"),
     "give the entry the data type the firmware implements.",
+    placed=Placement(
+        Clause.DEVICE_MISBEHAVES, "a mapping or write built from the description fails (abort 0607 0010h)"
+    ),
 )
 _declare(
     "PRB003",
@@ -88,6 +92,7 @@ The description says the entry can be read (ro, rw, rwr, rww, const) but the dev
     lambda: _speed().replace("AccessType=rw", "AccessType=wo"),
     _speed,
     "give the entry the access type the firmware implements.",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device refuses a read the description promises"),
 )
 _declare(
     "PRB004",
@@ -103,6 +108,7 @@ refuses to start the node when they differ.""",
     lambda: ex.var(0x1000, "Device type", U32, "ro", "0x00040192", 0) + _speed(),
     lambda: ex.var(0x1000, "Device type", U32, "ro", "0x00020192", 0) + _speed(),
     "describe the device as it is (its 1000h/1018h and [DeviceInfo]), or probe the device the description is for.",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "a master's boot-up check (1F84h-1F88h) rejects the device"),
 )
 _declare(
     "PRB005",
@@ -116,6 +122,7 @@ its error state) are not compared. `probe -o actual.dcf` keeps what the device h
     lambda: _speed().replace("DefaultValue=5", "DefaultValue=7"),
     _speed,
     "correct the default, or restore the device's defaults (1011h) if it was configured by mistake.",
+    placed=Placement(Clause.DECISION, "a default that was never true, or a device configured since"),
 )
 _declare(
     "PRB006",
@@ -129,6 +136,7 @@ sends.""",
     lambda: ex.var(0x1017, "Producer heartbeat time", U16, "rw", 100, 0) + _speed(),
     lambda: ex.var(0x1017, "Producer heartbeat time", U16, "rw", 0, 0) + _speed(),
     "correct the description, or configure the device as it says.",
+    placed=Placement(Clause.BEYOND_THE_PEERS, "a network tool planning from the description expects other traffic"),
 )
 _declare(
     "PRB007",
@@ -144,6 +152,7 @@ CiA 301 lets change only while the PDO is disabled) are not written.""",
     _speed,
     "give the entry the access type the firmware implements.",
     probe=" --check-writes",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device refuses a write the description promises"),
 )
 _declare(
     "PRB008",
@@ -157,4 +166,5 @@ the value, or its SDO server drops the request. A node that answers nothing is n
     _speed,
     "find why the firmware does not answer, or give a longer --timeout.",
     script="def setup(node):\n    node.silence(0x2000, 0)  # its SDO server drops the requests for 2000h",
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device does not answer within the timeout"),
 )

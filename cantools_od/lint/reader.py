@@ -7,7 +7,7 @@ from collections.abc import Callable
 from ..eds.keys import OBJECT_KEYS, Kind
 from ..model import Device, Diagnostic, NodeIdExpr, Severity, Variable
 from ..model.assemble import construct
-from .rules import Context, Fix, declare
+from .rules import Clause, Context, Fix, Placement, declare
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -29,6 +29,7 @@ whatever is selected, and checks every other file before it exits 2.""",
     fixed="; file: device.eds\n[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
     "DefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: nothing is written to a file that is no device description.",
+    placed=Placement(Clause.NOT_DONE, "no peer reads it as a device description; every command refuses it (exit 2)"),
 )
 declare(
     "JSN001",
@@ -41,21 +42,28 @@ refuses it with this one line and exit code 2, and never writes to it.""",
     '; whole file: device.json\n{"objects": 5}',
     fixed="; file: device.eds\n; $ cantools-od convert device.eds -o device.json\n; $ cantools-od lint device.json",
     fix_safety="No automatic fix: write the JSON model with `convert` or `dump --format json`.",
+    placed=Placement(Clause.NOT_DONE, "not a model dump: every command refuses it (exit 2)"),
 )
 declare(
     "EDS002",
-    W,
+    E,
     "Duplicate section or key",
     """
 A section or key appears twice. CiA 306 files are INI files, where names are unique; tools
 disagree on which copy counts. cantools-od merges repeated sections and keeps the last value
-of a repeated key.""",
+of a repeated key. Error: python-canopen and lely's dcfchk cannot load the file at all
+(configparser's DuplicateOptionError, DuplicateSectionError). `fmt` and `convert` still write it,
+once, as cantools-od read it: that is how to repair it, after checking that the kept copy is the
+one meant.""",
     (
         "[2000]\nParameterName=Speed\nParameterName=Velocity\nObjectType=0x7\nDataType=0x0006\n"
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
     fix_safety="No automatic fix: delete the copy that is not meant (cantools-od keeps the last value).",
+    placed=Placement(
+        Clause.PEER_CANNOT_LOAD, "python-canopen and lely dcfchk raise DuplicateOptionError/DuplicateSectionError"
+    ),
 )
 declare(
     "EDS030",
@@ -75,6 +83,9 @@ reads the byte 00h.""",
         "[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\nDefaultValue=12\nPDOMapping=0"
     ),
     fix_safety="No automatic fix: write the value in its type's form (DOMAIN: hex byte pairs).",
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "peers read another value or none (lely dcfchk: invalid DefaultValue)"
+    ),
 )
 declare(
     "EDS032",
@@ -94,15 +105,22 @@ rejects it), an inline comment after a value (CiA 306 has none), blank-separated
     ),
     fix_safety="No automatic fix: write the value as CiA 306 does (decimal, or hex with 0x), a comment on its own "
     "line.",
+    placed=Placement(
+        Clause.PORTABILITY, "not CiA 306's form; python-canopen drops octal, lely rejects two's-complement limits"
+    ),
 )
 declare(
     "EDS033",
-    W,
+    E,
     "Non-portable $NODEID formula",
     """
-CiA 306 writes `$NODEID` first, in upper case, followed by `+` terms. `0x180+$NODEID` is
-rejected by lely; `$NODEID+0x100+0x80` is read as one term by python-canopen and lely;
-lower-case `$nodeid` is not accepted by every tool. Subtracting from `$NODEID` is an error.""",
+CiA 306 writes `$NODEID` first, in upper case, followed by `+` terms. `0x180+$NODEID` and
+`$NODEID+0x100+0x80` are errors: lely's dcf-tools reject the value ("invalid value"), so dcfchk
+fails and dcfgen refuses the file ("invalid DCF"); python-canopen reads the first and no value
+for the second. Subtracting from
+`$NODEID` is an error. Lower-case `$nodeid`, which the peers read, is a warning, and so is a
+form only lely rejects when it stands in an XDD, which lely does not read. `fmt` writes
+each formula as `$NODEID+n` (a subtraction as it was written).""",
     (
         "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
         "DefaultValue=0x580+$NODEID\nPDOMapping=0"
@@ -111,21 +129,29 @@ lower-case `$nodeid` is not accepted by every tool. Subtracting from `$NODEID` i
         "[2000]\nParameterName=Response COB-ID\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n"
         "DefaultValue=$NODEID+0x580\nPDOMapping=0"
     ),
+    placed=Placement(
+        Clause.PEER_CANNOT_LOAD, "lely's dcf-tools raise on `0x180+$NODEID`: dcfchk fails, dcfgen refuses the file"
+    ),
 )
 declare(
     "EDS100",
-    W,
+    E,
     "File is not UTF-8",
     """
 The file contains bytes that are not UTF-8; it was read as DOS code page 850 when a word says so (`Sch\\x94naich`
 is Schönaich there, `Sch”naich` in Windows-1252), else as Windows-1252. Other tools may read those
-characters differently. Save the file as ASCII or UTF-8.""",
+characters differently. Save the file as ASCII or UTF-8. Error: python-canopen (which opens the
+file in the locale's encoding) and lely's dcfchk raise UnicodeDecodeError in a UTF-8 locale, so
+they cannot load it; `fmt` still formats it, in the code page it was read with.""",
     "; encoding: cp1252\n; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
     "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fixed="; Drehzahl für Achse 1\n[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\n"
     "AccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: which code page a file is in is a guess, so `fmt` writes it back in the one it "
     "was read with and no byte of its text changes; save it as UTF-8 yourself.",
+    placed=Placement(
+        Clause.PEER_CANNOT_LOAD, "python-canopen and lely dcfchk raise UnicodeDecodeError in a UTF-8 locale"
+    ),
 )
 declare(
     "EDS101",
@@ -137,6 +163,7 @@ Inside a section every line is `key=value`, a `;` comment or blank. This line is
     ("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue 0\nPDOMapping=0"),
     fixed=("[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0"),
     fix_safety="No automatic fix: the line is ignored; write it as key=value, or as a `;` comment.",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen and lely dcfchk raise configparser's ParsingError"),
 )
 declare(
     "EDS102",
@@ -147,6 +174,7 @@ A line starting with `[` must end its section name with `]`.""",
     "[2000\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fixed="[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: close the section name with `]`.",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen and lely dcfchk fail on the broken header"),
 )
 declare(
     "EDS103",
@@ -163,6 +191,10 @@ The section is kept as text, but no tool can use it.""",
         "AccessType=rw\nDefaultValue=0\nPDOMapping=0"
     ),
     fix_safety="No automatic fix: add the object's section, or delete the sub-object.",
+    placed=Placement(
+        Clause.PEER_CANNOT_LOAD,
+        "python-canopen raises KeyError on the orphaned sub-object; lely dcfchk: object not defined",
+    ),
 )
 declare(
     "EDS104",
@@ -179,6 +211,7 @@ decimal sub-indices 1..254 (ObjectLinks: 1..n), and NrOfEntries (ObjectLinks) co
     fix_safety="Safe for a wrong ObjectLinks count (no peer reads it): `--fix` writes the number of entries. Unsafe "
     "for a wrong NrOfEntries: python-canopen reads that many names, so the count changes what it reads (applied "
     "by `--unsafe-fixes`). No automatic fix otherwise.",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen raises KeyError; lely dcfchk: object not defined"),
 )
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from .codes import FAMILIES, Code, codes
 from .exampleset import Outcome, default_name, parse, run_example
+from .rules import Clause
 
 _HEAD = """# Rules
 
@@ -26,27 +27,14 @@ with it by design) and nothing else, at the line shown; the fixed one reports no
 """
 
 
-# The severity policy: (severity, when, examples); every code's severity follows it (tests/lint/test_severity_policy).
-POLICY = (
-    (
-        "error",
-        "a peer tool reads the file otherwise than it says (or cannot load it), or a device built from it misbehaves",
-        "python-canopen's `int('')` on `VendorNumber=` (DIA019), a standard object of another type (STD003)",
-    ),
-    (
-        "warning",
-        "portability or style: every peer reads one meaning, but the form is not CiA 306's or a tool beyond them "
-        "reads it otherwise",
-        "a key every peer passes over (EDS024 on a RECORD header), `$NODEID` after the number (EDS033)",
-    ),
-    ("info", "a decision worth knowing, nothing wrong", "two RPDOs on one CAN-ID (COB010)"),
-)
+_TAIL = """Every code names the clause that gives it its severity, with the peer or the misbehaviour (the tests hold
+each code to its clause's severity). The peers are python-canopen, lely's dcfchk and dcfgen, CANopenEditor and the
+CANopenNode stack. A rule may report its milder cases one step down and says so in its text."""
 
 
 def _policy() -> list[str]:
-    rows = [f"| {severity} | {when} | {examples} |" for severity, when, examples in POLICY]
-    tail = "A rule may report its milder cases one step down and says so in its text."
-    return ["## Severity policy", "", "| severity | when | examples |", "|---|---|---|", *rows, "", tail, ""]
+    rows = [f"| {clause.severity.value} | `{clause.value}` | {clause.meaning} |" for clause in Clause]
+    return ["## Severity policy", "", "| severity | clause | when |", "|---|---|---|", *rows, "", _TAIL, ""]
 
 
 def _block(text: str, language: str = "ini") -> list[str]:
@@ -107,7 +95,8 @@ def _code(code: Code) -> list[str]:
 
 def _body(code: Code) -> list[str]:
     rule = code.rule
-    out = [rule.description, ""]
+    clause, reason = rule.placed
+    out = [rule.description, "", f"Severity: {rule.severity.value}, by `{clause.value}`: {reason}.", ""]
     failing, derived = _failing(code)
     out += failing
     if rule.fixed:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
+from enum import Enum
 from functools import cached_property
 from typing import Any, NamedTuple, TypeVar
 
@@ -130,6 +131,60 @@ class Context:
 Check = Callable[[Context], Iterable[Finding]]
 
 
+class Clause(Enum):
+    """The clauses of the severity policy (docs/rules.md): why a code has its severity. A file's findings judge the
+    file by the peers (python-canopen, lely's dcfchk/dcfgen, CANopenEditor, the CANopenNode stack); the codes a
+    command reports about its own run (import-table, gen, lint) judge the run."""
+
+    PEER_CANNOT_LOAD = "peer-cannot-load"
+    PEER_READS_OTHERWISE = "peer-reads-otherwise"
+    DEVICE_MISBEHAVES = "device-misbehaves"
+    NOT_DONE = "not-done"
+    PORTABILITY = "portability"
+    STYLE = "style"
+    BEYOND_THE_PEERS = "beyond-the-peers"
+    LEFT_OUT = "left-out"
+    DECISION = "decision"
+
+    @property
+    def severity(self) -> Severity:
+        return CLAUSES[self][0]
+
+    @property
+    def meaning(self) -> str:
+        return CLAUSES[self][1]
+
+
+CLAUSES: dict[Clause, tuple[Severity, str]] = {
+    Clause.PEER_CANNOT_LOAD: (Severity.ERROR, "a peer tool cannot load the file (or build from it)"),
+    Clause.PEER_READS_OTHERWISE: (
+        Severity.ERROR,
+        "the file breaks CiA 306/311/301, and a peer tool reads another value, type or object than it says",
+    ),
+    Clause.DEVICE_MISBEHAVES: (
+        Severity.ERROR,
+        "a device built or configured from the file misbehaves, or refuses what a master does by it",
+    ),
+    Clause.NOT_DONE: (Severity.ERROR, "the command cannot do what was asked: nothing is written (exit 2)"),
+    Clause.PORTABILITY: (
+        Severity.WARNING,
+        "a form that is not CiA 306's (every peer reads one meaning), or one that is right by CiA 306 or a dialect "
+        "while a peer's limitation, named, reads it otherwise",
+    ),
+    Clause.STYLE: (Severity.WARNING, "nothing is read otherwise: a stale count, an ignored value, a likely typo"),
+    Clause.BEYOND_THE_PEERS: (Severity.WARNING, "the peers read it alike; a tool beyond them may not"),
+    Clause.LEFT_OUT: (Severity.WARNING, "the command did its work and left out what it names"),
+    Clause.DECISION: (Severity.INFO, "a decision worth knowing; nothing is wrong"),
+}
+
+
+class Placement(NamedTuple):
+    """Where the severity policy puts a code: the clause, and the peer or the misbehaviour that puts it there."""
+
+    clause: Clause
+    reason: str
+
+
 Text = str | Callable[[], str]
 """An example as text, or a function that makes it: one built with `examples`' builders is made when
 the documentation or a test reads it, not each time `lint` imports the rule modules."""
@@ -144,6 +199,7 @@ class Rule:
     example_text: Text
     family: str
     check: Check | None  # None: reported while reading (see the reader codes)
+    placed: Placement  # the clause of the severity policy that gives the code its severity, and why
     fixed_text: Text = ""
     fix_safety: str = ""  # what `--fix` does about it, and whether that is safe
     refs: str = ""  # the standard's sections, beyond the family's
@@ -181,15 +237,17 @@ def rule(
     fix_safety: str = "",
     refs: str = "",
     per_object: bool = False,
+    placed: Placement,
 ) -> Callable[[Check], Check]:
     """Register a check function under a code. The family is the module's last name part.
 
     `description` says why the rule exists; `example` is a fragment of an EDS that triggers it,
-    `fixed` the same fragment corrected (the documentation runs both). `per_object`: see `Rule.per_object`."""
+    `fixed` the same fragment corrected (the documentation runs both). `per_object`: see `Rule.per_object`.
+    `placed`: the clause of the severity policy that gives `severity`, with the peer or the misbehaviour."""
 
     def register(check: Check) -> Check:
         family = check.__module__.rsplit(".", 1)[-1]
-        _add(Rule(code, severity, summary, description.strip(), example, family, check, fixed,
+        _add(Rule(code, severity, summary, description.strip(), example, family, check, placed, fixed,
                   fix_safety.strip(), refs.strip(), per_object))  # fmt: skip
         return check
 
@@ -207,9 +265,10 @@ def declare(
     fixed: Text = "",
     fix_safety: str = "",
     refs: str = "",
+    placed: Placement,
 ) -> None:
     """Document a code that the reader reports, so `rules` lists it and `--select` knows it."""
-    _add(Rule(code, severity, summary, description.strip(), example, family, None, fixed,
+    _add(Rule(code, severity, summary, description.strip(), example, family, None, placed, fixed,
               fix_safety.strip(), refs.strip()))  # fmt: skip
 
 

@@ -22,7 +22,7 @@ from ..model.cia301.pdo import PDO_AREA
 from ..model.cia301.slots import as_int
 from . import examples as ex
 from .common import kind_unknown
-from .rules import Context, Finding, Fix, rule
+from .rules import Clause, Context, Finding, Fix, Placement, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -136,6 +136,7 @@ has a RECORD (or the reverse) lays out the same entries: that is STD002.""",
     "[1018]\nParameterName=Identity\nObjectType=0x7\nDataType=0x0007\nAccessType=ro",
     fixed=lambda: ex.identity(),
     fix_safety="No automatic fix: the object must be described again.",
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "a master addresses another layout of sub-indices"),
 )
 def object_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in _standard(ctx):
@@ -163,6 +164,9 @@ Warning: nothing is read wrong; the description differs from the standard's.""",
     lambda: ex.identity().replace("ObjectType=0x9", "ObjectType=0x8", 1),
     fixed=lambda: ex.identity(),
     fix_safety="No automatic fix (changing ObjectType changes generated code).",
+    placed=Placement(
+        Clause.PORTABILITY, "the entries read alike; python-canopen and CANopenNode offer another interface"
+    ),
 )
 def array_or_record(ctx: Context) -> Iterator[Finding]:
     for obj, found in _standard(ctx):
@@ -190,6 +194,9 @@ CiA 301 says UNSIGNED8), a file that follows them is not reported.
 Fix (unsafe, shown only): set DataType to the standard's; the values must then be checked by hand.""",
     "[1000]\nParameterName=Device type\nDataType=0x0004\nAccessType=ro",
     fixed="[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro",
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "python-canopen, lely and generated code decode other bytes than the device sends"
+    ),
 )
 def data_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in _standard(ctx):
@@ -256,6 +263,7 @@ Warning: communication works, but configuration steps fail or are skipped.""",
     "DataType=0x0005\nAccessType=ro\nDefaultValue=1\n[1018sub1]\nParameterName=Vendor-ID\nDataType=0x0007\n"
     "AccessType=ro",
     fix_safety="No automatic fix (the device's behaviour decides which side is wrong).",
+    placed=Placement(Clause.PORTABILITY, "a master writes where the device refuses, or leaves out what it may write"),
 )
 def access_type(ctx: Context) -> Iterator[Finding]:
     for obj, found in _standard(ctx):
@@ -293,6 +301,7 @@ Warning: nothing is read wrong; a configuration step can fail.""",
     "[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=1",
     fixed="[1017]\nParameterName=Producer heartbeat time\nDataType=0x0006\nAccessType=rw\nPDOMapping=0",
     fix_safety="No automatic fix.",
+    placed=Placement(Clause.STYLE, "the device refuses the mapping; nothing is read wrong"),
 )
 def mapping(ctx: Context) -> Iterator[Finding]:
     for obj, found in _standard(ctx):
@@ -331,6 +340,7 @@ Warning: the drive may still be run by SDO; a standard PDO set-up fails.""",
     ex.DEVICE_TYPE_402 + ex.STATUSWORD.replace("PDOMapping=1", "PDOMapping=0"),
     fixed=ex.DEVICE_TYPE_402 + ex.STATUSWORD,
     fix_safety="No automatic fix: making an entry mappable changes what a master may map.",
+    placed=Placement(Clause.STYLE, "a standard master sets up its PDOs otherwise than the file allows"),
 )
 def default_mapping(ctx: Context) -> Iterator[Finding]:
     for obj, found in _standard(ctx):
@@ -361,6 +371,7 @@ Warning: the value is one the standard rules out; which side is wrong depends on
     "[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=1",
     fixed="[1019]\nParameterName=Synchronous counter overflow value\nDataType=0x0005\nAccessType=rw\nDefaultValue=0",
     fix_safety="No automatic fix.",
+    placed=Placement(Clause.STYLE, "which side is wrong depends on the device"),
 )
 def value_range(ctx: Context) -> Iterator[Finding]:
     for obj, found in _standard(ctx):

@@ -15,7 +15,7 @@ from ..eds.peer_names import python_canopen_reads
 from ..model import Device, Location, Section, Severity
 from ..model.source import location
 from .common import OBJECT_FIELDS, explicit_objects, explicit_vars, file_start, invalid, present, where
-from .rules import Context, Finding, Fix, declare, rule
+from .rules import Clause, Context, Finding, Fix, Placement, declare, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
@@ -52,11 +52,13 @@ def _suggest(key: str, known: Iterable[str]) -> str:
 # The reader measures the lines (only it sees the text); the rule is documented with its family.
 declare(
     "EDS001",
-    E,
+    W,
     "Line longer than 255 characters",
     """
 CiA 306 limits every line to 255 characters; the length limits of the string keys (ParameterName
-241, Description 243, ...) follow from it. Tools with fixed line buffers cut longer lines.""",
+241, Description 243, ...) follow from it. Tools with fixed line buffers cut longer lines.
+Warning: python-canopen and lely's dcfchk read the whole line; a reader with a buffer of CiA
+306's size is a tool beyond them.""",
     "; "
     + "A comment that goes on " * 12
     + "\n"
@@ -65,6 +67,10 @@ CiA 306 limits every line to 255 characters; the length limits of the string key
     fixed="; A comment that stays short\n"
     + "[2000]\nParameterName=Speed\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=0\nPDOMapping=0",
     fix_safety="No automatic fix: shorten the line; a comment can go on several lines.",
+    placed=Placement(
+        Clause.BEYOND_THE_PEERS,
+        "python-canopen and lely read the whole line; readers with fixed 255-character buffers cut it",
+    ),
 )
 
 
@@ -95,6 +101,7 @@ python-canopen reads (Factor, Unit, Description, StorageLocation) are not report
     "[DeviceInfo]\nBaudrate_100=1",
     fixed=("[DeviceInfo]\nBaudRate_125=1"),
     per_object=True,
+    placed=Placement(Clause.STYLE, "CiA 306 allows unknown keys; often a typo that leaves the meant key missing"),
 )
 def unknown_keys(ctx: Context) -> Iterator[Finding]:
     for name, section, known in _keyed_sections(ctx.device):
@@ -128,6 +135,7 @@ section). It is kept as it is, but no other tool gives it a meaning; a typo in a
 name leaves that section missing.""",
     "[DeviceInfos]\nVendorName=Example",
     fixed="[DeviceInfo]\nVendorName=Example\nBaudRate_500=1",
+    placed=Placement(Clause.STYLE, "peers keep or drop it alike; often a typo of a known section"),
 )
 def unknown_sections(ctx: Context) -> Iterator[Finding]:
     for raw in ctx.device.other_sections:
@@ -142,17 +150,21 @@ def unknown_sections(ctx: Context) -> Iterator[Finding]:
 
 @rule(
     "EDS005",
-    E,
+    W,
     "Name longer than 241 characters",
     """
 A ParameterName holds at most 241 characters. Names in a section are caught by the line
 limit (EDS001); this rule checks the names that [xxxxName] gives to CompactSubObj sub-objects,
-whose shorter keys let a too long name fit on one line.""",
+whose shorter keys let a too long name fit on one line. Warning: python-canopen and lely read
+the whole name; only a reader that holds CiA 306's limit cuts it.""",
     "[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=1\n\n"
     "[2000Name]\nNrOfEntries=1\n1=" + "Input " * 41,
     fixed="[2000]\nParameterName=Inputs\nObjectType=0x8\nDataType=0x0005\nAccessType=ro\nCompactSubObj=1\n\n"
     "[2000Name]\nNrOfEntries=1\n1=Input 1",
     per_object=True,
+    placed=Placement(
+        Clause.BEYOND_THE_PEERS, "python-canopen and lely read the whole name; CiA 306 limits it to 241 characters"
+    ),
 )
 def long_names(ctx: Context) -> Iterator[Finding]:
     for obj in explicit_objects(ctx.device):
@@ -168,10 +180,16 @@ def long_names(ctx: Context) -> Iterator[Finding]:
     "Mandatory section missing",
     """
 Every EDS and DCF has [FileInfo], [DeviceInfo] and [DummyUsage] (CiA 306 §4). Tools read the
-vendor and product identity, supported baud rates and PDO counts from [DeviceInfo]. The object
-lists are checked by EDS019.""",
+vendor and product identity, supported baud rates and PDO counts from [DeviceInfo]; lely's dcfchk
+refuses a file without it. A missing [FileInfo] or [DummyUsage] is a warning: python-canopen and
+dcfchk load the file and read no file information and no dummy entries, as lely's own DCFs mean.
+The object lists are checked by EDS019.""",
     "; no [DeviceInfo]",
     fixed="[DeviceInfo]\nVendorName=Example\nProductName=Example",
+    placed=Placement(
+        Clause.PEER_CANNOT_LOAD,
+        "lely dcfchk refuses a file without [DeviceInfo] (without [FileInfo], [DummyUsage]: warning)",
+    ),
 )
 def missing_sections(ctx: Context) -> Iterator[Finding]:
     device = ctx.device
@@ -181,7 +199,9 @@ def missing_sections(ctx: Context) -> Iterator[Finding]:
         ("DummyUsage", device.dummy_usage is not None),
     ):
         if not there:
-            yield ctx.report("EDS009", f"[{name}] is missing", file_start(ctx))
+            finding = ctx.report("EDS009", f"[{name}] is missing", file_start(ctx))
+            # Every peer loads a file without [FileInfo] or [DummyUsage] and reads none: not CiA 306's form only.
+            yield finding if name == "DeviceInfo" else finding._replace(severity=W)
 
 
 @rule(
@@ -194,6 +214,7 @@ CreationDate and ModificationDate are written `mm-dd-yyyy`, CreationTime and Mod
 (17:24:43), which other tools misread or reject.""",
     ("[FileInfo]\nFileName=example.eds\nEDSVersion=4.0\nCreationDate=2024-02-27\nCreationTime=17:24"),
     fixed=("[FileInfo]\nFileName=example.eds\nEDSVersion=4.0\nCreationDate=02-27-2024\nCreationTime=05:24PM"),
+    placed=Placement(Clause.PORTABILITY, "not CiA 306's date/time form; tools that parse dates misread it"),
 )
 def date_time(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.file_info
@@ -216,6 +237,7 @@ Without EDSVersion a file counts as CiA 306 version 3.0. Files following the cur
 specification write `EDSVersion=4.0`.""",
     "[FileInfo]\nFileName=device.eds\nFileVersion=1",
     fixed="[FileInfo]\nFileName=device.eds\nFileVersion=1\nEDSVersion=4.0",
+    placed=Placement(Clause.DECISION, "counts as CiA 306 v3.0; nothing is read otherwise"),
 )
 def eds_version_missing(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.file_info
@@ -232,6 +254,7 @@ Files written to CiA 306 v1.3 state `EDSVersion=4.0`. Other values seen in the w
 python-canopen default, or `402`) name no version of the specification.""",
     "[FileInfo]\nEDSVersion=4.2",
     fixed="[FileInfo]\nEDSVersion=4.0",
+    placed=Placement(Clause.STYLE, "names no version of CiA 306; peers read the file alike"),
 )
 def eds_version(ctx: Context) -> Iterator[Finding]:
     info = ctx.device.file_info
@@ -249,6 +272,7 @@ def eds_version(ctx: Context) -> Iterator[Finding]:
 python-canopen reads exactly `Lines` lines and fails on a missing one.""",
     "[Comments]\nLines=3\nLine1=First\nLine2=Second",
     fixed="[Comments]\nLines=2\nLine1=First\nLine2=Second",
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "python-canopen raises NoOptionError on the missing Line<n>"),
 )
 def comment_lines(ctx: Context) -> Iterator[Finding]:
     comments = ctx.device.comments
@@ -335,6 +359,7 @@ does, since it then reads a value it did not read before.""",
     "[MandatoryObjects]\nSupported Objects=3\n1=0x1000\n2=0x1001\n3=0x1018",
     fixed="[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018",
     per_object=True,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "lely dcfchk rejects the name and python-canopen does not find it"),
 )
 def unfound_spelling(ctx: Context) -> Iterator[Finding]:
     for spelling in spellings(ctx):

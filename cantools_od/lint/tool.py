@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..model import Severity
 from . import examples as ex
-from .rules import declare
+from .rules import Clause, Placement, declare
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 _IMPORT = "docs/import-table.md describes the importer, its layouts and its overrides file."
@@ -30,11 +30,10 @@ def _table(rows: str, header: str = _HEADER, command: str = _IMPORT_TABLE) -> st
     return f"; whole file: table.csv\n{header}\n{rows}\n{command}"
 
 
-def _importer(
-    code: str, severity: Severity, summary: str, why: str, example: str = "", fixed: str = "", fix: str = ""
-) -> None:
+def _importer(code: str, severity: Severity, summary: str, why: str, example: str = "", fixed: str = "",
+              fix: str = "", *, placed: Placement) -> None:  # fmt: skip
     declare(code, severity, summary, f"{why.strip()}\n\n{_IMPORT}", example, family="import", fixed=fixed,
-            fix_safety=f"No automatic fix: {fix}" if fix else "")  # fmt: skip
+            fix_safety=f"No automatic fix: {fix}" if fix else "", placed=placed)  # fmt: skip
 
 
 _importer(
@@ -47,6 +46,7 @@ import-table exits with 2.""",
     "; $ cantools-od import-table manual.txt -o device.eds",
     _table(_ROWS),
     "name a file that exists and can be read.",
+    placed=Placement(Clause.NOT_DONE, "import-table exits 2"),
 )
 _importer(
     "IMP002",
@@ -58,6 +58,7 @@ no object from any source, import-table exits with 2.""",
     "; whole file: manual.txt\nJust some text.\nNo tables here.\n; $ cantools-od import-table manual.txt -o device.eds",
     _table(_ROWS),
     "give the source holding the object table, or force its layout with --layout.",
+    placed=Placement(Clause.NOT_DONE, "import-table exits 2"),
 )
 _importer(
     "IMP003",
@@ -74,6 +75,7 @@ exits with 2.""",
         + " --overrides fixes.toml",
     ),
     "correct the overrides file.",
+    placed=Placement(Clause.NOT_DONE, "import-table exits 2"),
 )
 _importer(
     "IMP004",
@@ -85,6 +87,7 @@ A delimited file could not be read as CSV or TSV from the reported line on.""",
     + _IMPORT_TABLE,
     _table(_ROWS),
     "export the table again; a cell holds at most 128 KiB.",
+    placed=Placement(Clause.LEFT_OUT, "rows from the reported line on are missing"),
 )
 _importer(
     "IMP010",
@@ -96,6 +99,7 @@ know; the value is left unknown.""",
     _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0,maybe", _HEADER + ",PDO mapping"),
     _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0,yes", _HEADER + ",PDO mapping"),
     "spell the cell as CiA 301 does, or set the field in the overrides file.",
+    placed=Placement(Clause.LEFT_OUT, "the value is left unknown"),
 )
 _importer(
     "IMP011",
@@ -107,6 +111,7 @@ cannot be placed and are skipped. (In a column table such a row is taken for a n
     _MANUAL.format(index="20xxh"),
     _MANUAL.format(index="2000h"),
     "write the index as a hex number (`2000h`, `0x2000`).",
+    placed=Placement(Clause.LEFT_OUT, "the block is skipped"),
 )
 _importer(
     "IMP012",
@@ -117,6 +122,7 @@ The row's sub-index cell is not a sub-index or a range of them; the row is skipp
     _table(_ROWS + "\n0x2000,x,Speed,UNSIGNED16,rw,0"),
     _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0"),
     "write the sub-index as a number.",
+    placed=Placement(Clause.LEFT_OUT, "the row is skipped"),
 )
 _importer(
     "IMP013",
@@ -128,6 +134,7 @@ dropped.""",
     _table(_ROWS + "\n0x1600-0x17FF,1,Mapped object 1,UNSIGNED32,rw,0"),
     _table(_ROWS + "\n0x1600,0,Number of mapped objects,UNSIGNED8,rw,0\n0x1600,1,Mapped object 1,UNSIGNED32,rw,0"),
     "name the concrete objects the range stands for.",
+    placed=Placement(Clause.LEFT_OUT, "the range's rows are dropped"),
 )
 _importer(
     "IMP020",
@@ -143,6 +150,7 @@ shows both with their lines.""",
     "Index,Name,Data type,Access\n0x1000,Device type,UNSIGNED32,ro\n"
     "; $ cantools-od import-table a.csv b.csv -o device.eds --strict",
     "decide in the overrides file which value holds.",
+    placed=Placement(Clause.LEFT_OUT, "the policy chose one value"),
 )
 _importer(
     "IMP031",
@@ -154,6 +162,7 @@ an override.""",
     _table(_ROWS + "\n0x2000,,Speed,,rw,0"),
     _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,0"),
     "give the data type and access in a source or the overrides file.",
+    placed=Placement(Clause.LEFT_OUT, "the EDS key is left out"),
 )
 _importer(
     "IMP032",
@@ -167,6 +176,7 @@ Sub-index FFh holds an object's structure (CiA 301) and cannot be written to an 
     ),
     _table(_ROWS + "\n0x2000,0,Highest sub-index supported,UNSIGNED8,ro,1\n0x2000,1,Gain,INTEGER16,rw,0"),
     "the EDS describes the structure through ObjectType and the sub-objects.",
+    placed=Placement(Clause.LEFT_OUT, "sub-index FFh cannot be written to an EDS"),
 )
 _importer(
     "IMP040",
@@ -188,6 +198,7 @@ misspelled.""",
         + " --overrides fixes.toml",
     ),
     "correct the override's index, sub-index or field.",
+    placed=Placement(Clause.LEFT_OUT, "the override changes nothing"),
 )
 _importer(
     "IMP050",
@@ -198,6 +209,7 @@ A default or limit is outside its data type's range; it is left out of the EDS."
     _table(_ROWS + "\n0x2000,,Speed,UNSIGNED8,rw,300"),
     _table(_ROWS + "\n0x2000,,Speed,UNSIGNED16,rw,300"),
     "correct the value or the data type, in a source or the overrides file.",
+    placed=Placement(Clause.LEFT_OUT, "the value is left out of the EDS"),
 )
 _importer(
     "IMP051",
@@ -209,6 +221,7 @@ An absolute default COB-ID of the pre-defined connection set (CiA 301), printed 
     _table(_ROWS + "\n0x1014,,COB-ID EMCY,UNSIGNED32,rw,0x81"),
     _table(_ROWS + "\n0x1014,,COB-ID EMCY,UNSIGNED32,rw,$NODEID+0x80"),
     "the importer writes it so itself; write it node-relative in the source to silence it.",
+    placed=Placement(Clause.DECISION, "written node-relative, as CiA 301 means it"),
 )
 
 declare(
@@ -226,6 +239,7 @@ that differs from the type's size, a mapping count above 64, or more bits than t
         "; file: drive.eds\n" + ex.pdo("tx", "0x60410010") + ex.STATUSWORD + "; $ cantools-od gen drive.eds -t c -o out"
     ),
     fix_safety="No automatic fix: `--keep-going` leaves the PDO out of the generated code instead.",
+    placed=Placement(Clause.NOT_DONE, "gen writes nothing"),
 )
 declare(
     "LNT001",
@@ -236,4 +250,5 @@ A rule raised an exception on this file. The other rules still ran; the failing 
 are missing. Please report it with the file.""",
     family="lint",
     fix_safety="No automatic fix: report the failure with the file; meanwhile `--ignore` the rule's code.",
+    placed=Placement(Clause.NOT_DONE, "the rule's findings are missing"),
 )

@@ -24,7 +24,7 @@ from ..model import (
 )
 from ..model.datatypes import TIME_OF_DAY
 from . import examples as ex
-from .rules import Context, Finding, rule
+from .rules import Clause, Context, Finding, Placement, rule
 
 E, W = Severity.ERROR, Severity.WARNING
 
@@ -157,6 +157,7 @@ node-ID given). Tools truncate such values or reject the file.""",
     "[2000]\nParameterName=Count\nDataType=0x0005\nAccessType=rw\nDefaultValue=300",
     fixed="[2000]\nParameterName=Count\nObjectType=0x7\nDataType=0x0006\nAccessType=rw\nDefaultValue=300\nPDOMapping=0",
     per_object=True,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "lely dcfchk: overflow; tools truncate the value"),
 )
 def type_range(ctx: Context) -> Iterator[Finding]:
     bounds: dict[int, tuple[int, int] | None] = {}  # per data type index
@@ -210,6 +211,9 @@ DOMAIN and the TIME types have no order a limit could use (CiA 306, LowLimit/Hig
     "[2000]\nParameterName=Name\nDataType=0x0009\nAccessType=rw\nLowLimit=0",
     fixed="[2000]\nParameterName=Name\nObjectType=0x7\nDataType=0x0009\nAccessType=rw\nDefaultValue=x\nPDOMapping=0",
     per_object=True,
+    placed=Placement(
+        Clause.PEER_READS_OTHERWISE, "lely dcfchk: limit not supported for the type; no order a limit could use"
+    ),
 )
 def non_numeric_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -255,6 +259,7 @@ Signed limits are compared as the numbers they denote (two's-complement hex incl
         "PDOMapping=0\nLowLimit=-100\nHighLimit=100"
     ),
     per_object=True,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "every write to the entry fails"),
 )
 def limits_order(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -317,6 +322,9 @@ value it would refuse to be written. `$NODEID` defaults are checked for node-IDs
         "PDOMapping=0\nHighLimit=3000"
     ),
     per_object=True,
+    placed=Placement(
+        Clause.DEVICE_MISBEHAVES, "the device starts with a value it refuses to be written (lely dcfchk: overflow)"
+    ),
 )
 def default_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -350,6 +358,7 @@ back from the device.""",
         "PDOMapping=0\nHighLimit=3000\nParameterValue=3000"
     ),
     per_object=True,
+    placed=Placement(Clause.DEVICE_MISBEHAVES, "the device refuses the configured value (abort 0609 0031h/0032h)"),
 )
 def parameter_in_limits(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -374,6 +383,7 @@ the text stays as it is, which is rarely what was meant: usually the DataType is
         "DefaultValue=$NODEID+0x180\nPDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(Clause.STYLE, "a string keeps `$NODEID` as text; usually the DataType is wrong"),
 )
 def nodeid_text(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -397,6 +407,7 @@ differently. Use UNICODE_STRING or OCTET_STRING for other text.""",
         "DefaultValue=Motor 5 deg\nPDOMapping=0"
     ),
     per_object=True,
+    placed=Placement(Clause.PORTABILITY, "no defined encoding on the bus; devices and tools show it differently"),
 )
 def visible_string(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):
@@ -421,6 +432,7 @@ checked; as a limit it disables the check, as a default it is rarely intended. P
     "[2000]\nParameterName=Gain\nDataType=0x0008\nAccessType=rw\nDefaultValue=nan",
     fixed="[2000]\nParameterName=Gain\nObjectType=0x7\nDataType=0x0008\nAccessType=rw\nDefaultValue=1.5\nPDOMapping=0",
     per_object=True,
+    placed=Placement(Clause.BEYOND_THE_PEERS, "tools read `nan`/`inf` text differently; comparisons fail"),
 )
 def real_finite(ctx: Context) -> Iterator[Finding]:
     for entry in entries(ctx):

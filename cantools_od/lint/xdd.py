@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..model import Severity
-from .rules import declare
+from .rules import Clause, Placement, declare
 
 E, W = Severity.ERROR, Severity.WARNING
 _FAMILY = "xdd"
@@ -24,6 +24,7 @@ tool can read it as a CiA 311 device description. Nothing after the error is rea
     fixed=_SETTING + "/>",
     fix_safety="No automatic fix: only the author knows what the broken markup meant.",
     family=_FAMILY,
+    placed=Placement(Clause.PEER_CANNOT_LOAD, "no XML parser reads past the error"),
 )
 declare(
     "XDD002",
@@ -38,6 +39,7 @@ not read. Remove the DOCTYPE.""",
     fixed="; file: device.xdd\n" + _SETTING + "/>",
     fix_safety="No automatic fix: the file is not read, so nothing is written back.",
     family=_FAMILY,
+    placed=Placement(Clause.NOT_DONE, "refused unread, against entity expansion and XXE"),
 )
 declare(
     "XDD003",
@@ -50,6 +52,7 @@ memory.""",
     "; $ python3 -c \"print('<a>' * 65 + '</a>' * 65)\" > deep.xdd\n; $ cantools-od lint deep.xdd",
     fix_safety="No automatic fix: the file is not read.",
     family=_FAMILY,
+    placed=Placement(Clause.NOT_DONE, "refused unread, to bound time and memory"),
 )
 declare(
     "XDD004",
@@ -63,6 +66,7 @@ means the file is some other XML; it is read as far as its elements match.""",
     fixed="; file: device.xdd\n" + _SETTING + "/>",
     fix_safety="No automatic fix: the file is not read as a CiA 311 document.",
     family=_FAMILY,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "not a CiA 311 document: CiA 311 tools find no device in it"),
 )
 declare(
     "XDD005",
@@ -76,6 +80,10 @@ matches elements by local name either way.""",
     fixed='<ISO15745ProfileContainer xmlns="http://www.canopen.org/xml/1.1" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
     fix_safety='No automatic fix: add `xmlns="http://www.canopen.org/xml/1.1"` to the root element.',
     family=_FAMILY,
+    placed=Placement(
+        Clause.BEYOND_THE_PEERS,
+        "schema-validating tools (CANopenEditor's serializer) find no element; namespace-blind readers read it",
+    ),
 )
 declare(
     "XDD006",
@@ -89,6 +97,7 @@ unnamed.""",
     fixed=_SETTING + "/>",
     fix_safety="No automatic fix: only the author knows the index or name meant.",
     family=_FAMILY,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "an object without its index cannot be placed: it is left out"),
 )
 declare(
     "XDD007",
@@ -102,6 +111,9 @@ property with a value the stack does not know. The text is kept as it is.""",
     fixed=_SETTING + "/>",
     fix_safety="No automatic fix: the text is kept as written.",
     family=_FAMILY,
+    placed=Placement(
+        Clause.PORTABILITY, "a value outside CiA 311's words; the text is kept, tools may read it otherwise"
+    ),
 )
 declare(
     "XDD008",
@@ -114,6 +126,7 @@ on which copy counts; this reader keeps the first and ignores the later one.""",
     fixed=_SETTING + "/>\n" + _SETTING.replace("2000", "2001").replace("Setting", "Other setting") + "/>",
     fix_safety="No automatic fix: which copy is meant is the author's decision.",
     family=_FAMILY,
+    placed=Placement(Clause.PEER_READS_OTHERWISE, "tools disagree on which copy counts"),
 )
 declare(
     "XDD009",
@@ -126,6 +139,10 @@ that does not exist, so the entry's data type, access and default value stated t
     fixed=_SETTING + "/>",
     fix_safety="No automatic fix: add the parameter, or state the attributes on the object itself.",
     family=_FAMILY,
+    placed=Placement(
+        Clause.STYLE,
+        "every reader finds the entry without its parameter's type, access and default; usually a mistyped ID",
+    ),
 )
 declare(
     "XDD010",
@@ -138,6 +155,7 @@ meaning for any tool; check its spelling.""",
     fixed=_SETTING + "/>",
     fix_safety="No automatic fix: the element is kept as written.",
     family=_FAMILY,
+    placed=Placement(Clause.STYLE, "an element nobody gives a meaning; usually a typo"),
 )
 declare(
     "XDD011",
@@ -150,4 +168,5 @@ back) but has no meaning for any tool; check its spelling (attribute names are c
     fixed=_SETTING + ' lowLimit="0"/>',
     fix_safety="No automatic fix: the attribute is kept as written.",
     family=_FAMILY,
+    placed=Placement(Clause.STYLE, "an attribute nobody gives a meaning; usually a typo"),
 )

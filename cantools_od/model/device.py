@@ -254,10 +254,25 @@ def _strip_origins(data: object) -> object:
     return data
 
 
+READ_WHOLE = frozenset({"EDS002", "EDS033", "EDS100"})
+"""Reader errors about the peers, not about what the reader could read: python-canopen and lely's dcfchk cannot load
+such a file (they raise), so lint reports an error, but the reader read all of it, one way, and a command carrying
+it on loses nothing. A section or key given twice (EDS002) is written once, as the reader merged it: `fmt` and
+`convert` are how it is repaired; so is a `$NODEID` formula in another order (EDS033), written `$NODEID+n` (a
+subtraction keeps its spelling). A file that is not UTF-8 (EDS100) is read whole in the code page it was guessed
+to be in, which `fmt` keeps."""
+
+
+def blocking_errors(device: Device) -> list[Diagnostic]:
+    """The reader's errors that stop a command carrying the content on: all but `READ_WHOLE`'s."""
+    return [d for d in device.diagnostics if d.severity is Severity.ERROR and d.code not in READ_WHOLE]
+
+
 def errors_to_fix(device: Device) -> str | None:
     """`N errors to fix first` when reading found errors: a command that would carry the content
     on (fmt, convert, ids, the editor's formatting) then does nothing rather than lose or spread what it
     could not read. The errors of lint's rules do not count: what such a file says is carried on as it is
-    (the input's error is lint's to report, and fmt changes nothing peers read)."""
-    count = sum(d.severity is Severity.ERROR for d in device.diagnostics)
+    (the input's error is lint's to report, and fmt changes nothing peers read); nor do the reader's errors
+    about peers on a file it read whole (`READ_WHOLE`)."""
+    count = len(blocking_errors(device))
     return f"{count} error{'s' if count != 1 else ''} to fix first" if count else None

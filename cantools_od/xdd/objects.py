@@ -20,6 +20,7 @@ from ..model import (
     Device,
     Object,
     ObjectKind,
+    Severity,
     SubObject,
     ValueKind,
     Variable,
@@ -313,6 +314,8 @@ class ObjectReader:
             for code, severity, message in parsed.notes:
                 if "separated by blanks" in message:
                     continue  # CANopenEditor's own XDD spelling of OCTET_STRING values
+                if code == "EDS033" and "lely rejects" in message:
+                    severity = Severity.WARNING  # lely reads no XDD: a spelling only lely refuses is portability here
                 self.ctx.report.add(code, severity, f"{pending.key}: {message}", *pending.where)
 
 

@@ -25,9 +25,9 @@ GOOD = (EXAMPLES / "io_device.eds").read_bytes()
 NOBODY = 65534
 
 
-def _huge_line() -> bytes:
-    """A valid file whose one object name is a megabyte long."""
-    return GOOD.replace(b"ParameterName=Device settings", b"ParameterName=" + b"M" * 1_000_000, 1)
+HUGE_LINE = GOOD.replace(b"ParameterName=Device settings", b"ParameterName=" + b"M" * 1_000_000, 1)
+"""A valid file whose one object name is a megabyte long: CiA 306 allows 255 characters a line, but python-canopen
+and lely read the whole line, so it is no hostile input but a warning (EDS001, docs/rules.md's severity policy)."""
 
 
 HOSTILE: dict[str, bytes] = {
@@ -35,7 +35,6 @@ HOSTILE: dict[str, bytes] = {
     "empty.eds": b"",
     "blank.eds": b"  \r\n\t\n\n",
     "truncated.eds": GOOD[: len(GOOD) // 2],
-    "huge-line.eds": _huge_line(),
     "nul-in-name.eds": GOOD.replace(b"ParameterName=Device settings", b"ParameterName=Manu\x00facturer", 1),
     "headerless.eds": b"ParameterName=Speed\nDataType=0x0007\nAccessType=rw\n",
     "device.xdd.eds": b'<?xml version="1.0" encoding="utf-8"?>\n<ISO15745ProfileContainer/>\n',

@@ -7,7 +7,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
-from kit import GOOD, HOSTILE, assert_failed_cleanly, non_writer, open_folder, run, snapshot
+from kit import GOOD, HOSTILE, HUGE_LINE, assert_failed_cleanly, non_writer, open_folder, run, snapshot
 
 COMMANDS: dict[str, list[str]] = {
     "lint": ["lint", "{}"],
@@ -52,6 +52,15 @@ def run_on(folder: Path, command: str, name: str) -> list[str]:
     except AssertionError as failure:
         return [str(failure)]
     return []
+
+
+def test_a_megabyte_long_name_is_read_whole_with_a_warning(tmp_path: Path) -> None:
+    (tmp_path / "huge-line.eds").write_bytes(HUGE_LINE)
+    ran = run("lint", "huge-line.eds", cwd=tmp_path)
+    assert ran.returncode == 0, ran
+    assert "huge-line.eds:528:256: warning: line has 1000014 characters; CiA 306 allows 255 [EDS001]" in ran.stdout
+    assert run("dump", "huge-line.eds", cwd=tmp_path).returncode == 0
+    assert (tmp_path / "huge-line.eds").read_bytes() == HUGE_LINE
 
 
 FAMILY = {"firmware.eds": "an EDS/DCF file", "firmware.xdd": "an XDD/XDC (CiA 311) file"}

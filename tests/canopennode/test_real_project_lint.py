@@ -85,6 +85,9 @@ PROJECT_LINT: dict[str, tuple[Judged, ...]] = {
         Judged("DIA019", (17, 19), True, "empty VendorNumber and ProductNumber: python-canopen's import_od raises "
                "ValueError, the file cannot be loaded"),
         Judged("PDO010", (654,), True, RPDO_SUB6),
+        Judged("EDS033", (450, 588, 597), True,
+               "0x80+$NODEID, 0x600+$NODEID, 0x580+$NODEID: CiA 306 writes $NODEID first; lely's dcfchk rejects the "
+               "value and dcfgen's Device.from_dcf refuses the file, so a lely master cannot take this EDS"),
         Judged("PDO044", (696, 705, 714, 723), True,
                "RPDO1 writes 2200h-2203h, AccessType=ro: CiA 301 lets an RPDO write writable entries only, and the "
                "OD gen makes gives them ODA_TPDO (CNO010), so the stack refuses RPDO1's mapping (ODR_NO_MAP); only "

@@ -32,6 +32,8 @@ PARENT = "CANTOOLS_OD_LSP_PARENT"
 OWN_PROCESS_ABOVE = 2_000_000
 """Default of the `ownProcessAbove` setting: characters of a document's text at opening."""
 SETTING = "ownProcessAbove"
+SYMBOLS_WAIT = 2.0
+"""Seconds a workspace symbol search waits for each child; one still busy (reading its document) adds nothing."""
 _OWN = "cantools-od/"
 """Prefix of the ids of this server's own requests to a child (the editor's ids are passed on unchanged)."""
 _ID = re.compile(rb'\{\s*"id":\s*("(?:[^"\\]|\\.)*"|-?\d+)')
@@ -191,8 +193,6 @@ class Children:
         self.initialize: dict[str, Any] = {}
         self.of: dict[str, Child] = {}
         self.spawned: list[Child] = []
-        self.asked: dict[str | int, Child] = {}
-        """The editor's requests passed to a child, by id: where their cancellation goes."""
         self.recording: Recording | None = None
         """The server's stdin, when it reads one: each message passed on as it came."""
 
@@ -215,7 +215,7 @@ class Children:
                 each.send({**message, "params": {**params, "settings": kept_in_process(params.get("settings"))}})
             return False
         if method == "$/cancelRequest" and isinstance(params, dict):
-            owner = self.asked.pop(params.get("id"), None)  # type: ignore[arg-type]
+            owner = next((child for child in self.of.values() if params.get("id") in child.pending), None)
             if owner is not None:
                 owner.send(self._as_it_came(message))
             return owner is not None
@@ -227,7 +227,6 @@ class Children:
         child.send(self._as_it_came(message))
         if "id" in message:
             child.pending.add(message["id"])
-            self.asked[message["id"]] = child
         if method == "textDocument/didClose":
             del self.of[child.uri]
             child.close()
@@ -255,7 +254,6 @@ class Children:
         for number in child.pending:
             error = {"code": _STOPPED, "message": "the process checking this document stopped"}
             self.relay(_frame({"jsonrpc": "2.0", "id": number, "error": error}))
-        self.asked = {number: owner for number, owner in self.asked.items() if owner is not child}
         self.spawned.remove(child)
         if child.closing or self.of.get(child.uri) is not child:
             return
@@ -265,9 +263,13 @@ class Children:
     async def symbols(self, query: str) -> list[Any]:
         """Workspace symbols of the children's documents."""
         asked = [child.request("workspace/symbol", {"query": query}) for child in self.of.values()]
+        if not asked:
+            return []
+        done, _ = await asyncio.wait(asked, timeout=SYMBOLS_WAIT)
         found: list[Any] = []
-        for answer in await asyncio.gather(*asked):
-            found += answer if isinstance(answer, list) else []
+        for answer in asked:
+            result = answer.result() if answer in done else None
+            found += result if isinstance(result, list) else []
         return found
 
     def close_all(self) -> None:

@@ -27,6 +27,11 @@ DEBOUNCE = 0.1
 """Seconds of quiet after an edit before the document is read and linted again, when the edit follows another
 within that time (a burst: typing, a paste in steps, an undo); an edit after a quiet spell is checked at once."""
 
+EAGER_INDEX = 2_000_000
+"""Characters up to which a document's index (where hover and navigation look keys up) is made after each check,
+in its queue; a larger one's is made at the first request that needs it (seconds of work for 20 MB, for nothing
+when nobody hovers)."""
+
 
 @dataclass
 class Open:
@@ -183,7 +188,7 @@ class OdServer(LanguageServer):
             return
         state.analysis, state.lines, state.cache = analysis, lines, {}
         self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found, version))
-        if analysis.device is not None:  # what hover and navigation look keys up in, made beside the loop
+        if analysis.device is not None and len(text) <= EAGER_INDEX:  # made beside the loop, not at the first hover
             try:
                 index = await self.in_worker(uri, Index, analysis.device)
             except RuntimeError:  # closed meanwhile

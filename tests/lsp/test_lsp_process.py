@@ -164,3 +164,22 @@ def test_no_process_outlives_the_server(tmp_path: Path, ending: str) -> None:
         server.kill()
     server.wait(30)
     assert wait_until(lambda: not alive(child)), f"{ending}: the document's process {child} is still running"
+
+
+@ASYNC
+async def test_a_document_whose_process_stops_says_so(client: LanguageClient, tmp_path: Path) -> None:
+    path = tmp_path / "device.eds"
+    path.write_bytes((EXAMPLES / "cia402_drive.eds").read_bytes())
+    uri = path.resolve().as_uri()
+    await open_file(client, path)
+    (pid,) = children_of(server_pid(client))
+    os.kill(pid, 9)
+    said = await diagnostics_for(client, uri, None)  # type: ignore[arg-type]
+    assert [d.message for d in said] == [
+        "the process checking this document stopped (exit code -9); close and reopen it"
+    ]
+    hover = await client.text_document_hover_async(
+        types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(1, 1))
+    )
+    assert hover is None  # the server answers (it has no such document), it does not wait for the dead process
+    close_file(client, path)

@@ -91,13 +91,23 @@ async def test_a_document_in_its_own_process_is_checked_as_lint_checks_it(client
     assert wait_until(lambda: set(children_of(server_pid(client))) <= before)
 
 
-@ASYNC
-async def test_every_feature_answers_from_the_documents_process(client: LanguageClient, tmp_path: Path) -> None:
-    path = tmp_path / "device.eds"
+def _example(folder: Path) -> Path:
+    path = folder / "device.eds"
     path.write_bytes((EXAMPLES / "cia402_drive.eds").read_bytes())
-    uri = path.resolve().as_uri()
+    return path
+
+
+async def _opened(client: LanguageClient, folder: Path) -> tuple[Path, str, int]:
+    """A copy of an example opened: its path, its URI and the process serving it (the only one)."""
+    path = _example(folder)
     await open_file(client, path)
     (pid,) = children_of(server_pid(client))
+    return path, path.resolve().as_uri(), pid
+
+
+@ASYNC
+async def test_every_feature_answers_from_the_documents_process(client: LanguageClient, tmp_path: Path) -> None:
+    path, uri, pid = await _opened(client, tmp_path)
     lines = text_of(path).splitlines()
     header = lines.index("[1000]")
     document = types.TextDocumentIdentifier(uri)
@@ -124,7 +134,6 @@ async def test_every_feature_answers_from_the_documents_process(client: Language
     diagnostics = await diagnostics_for(client, uri, 2)
     path.write_text("\n".join([*lines[:line], "DataType=0x0099", *lines[line + 1 :]]) + "\n")
     assert sorted(seen(diagnostics)) == sorted(expected(Lint([path]).result(), text_of(path)))
-    assert any(d.code == "EDS021" or "0x0099" in d.message for d in diagnostics) or diagnostics
     close_file(client, path)
     assert wait_until(lambda: not alive(pid))
 
@@ -136,8 +145,7 @@ def _message(body: dict[str, object]) -> bytes:
 
 def _session(folder: Path) -> tuple[subprocess.Popen[bytes], int]:
     """A server started as an editor starts it, with one document open in a process of its own: (server, child)."""
-    path = folder / "device.eds"
-    path.write_bytes((EXAMPLES / "cia402_drive.eds").read_bytes())
+    path = _example(folder)
     server = subprocess.Popen([*cli_command(), "lsp", "--stdio"], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL)
     assert server.stdin is not None
     options = {"processId": os.getpid(), "rootUri": None, "capabilities": {}, "initializationOptions": EVERY_DOCUMENT}
@@ -168,11 +176,7 @@ def test_no_process_outlives_the_server(tmp_path: Path, ending: str) -> None:
 
 @ASYNC
 async def test_a_document_whose_process_stops_says_so(client: LanguageClient, tmp_path: Path) -> None:
-    path = tmp_path / "device.eds"
-    path.write_bytes((EXAMPLES / "cia402_drive.eds").read_bytes())
-    uri = path.resolve().as_uri()
-    await open_file(client, path)
-    (pid,) = children_of(server_pid(client))
+    path, uri, pid = await _opened(client, tmp_path)
     os.kill(pid, 9)
     said = await diagnostics_for(client, uri, None)  # type: ignore[arg-type]
     assert [d.message for d in said] == [

@@ -3,10 +3,15 @@ request's handler (features.py); `serve` runs it on stdin/stdout."""
 
 from __future__ import annotations
 
+import contextlib
+import os
+import sys
+
 from lsprotocol import types
 
 from . import features
 from .document import Encoding, path_of
+from .process import PARENT, Recording, watch_parent
 from .rpc import log_in_one_line
 from .server import OdServer, Open
 from .text import faster
@@ -31,6 +36,10 @@ def build() -> OdServer:
     def did_change_configuration(ls: OdServer, params: types.DidChangeConfigurationParams) -> None:
         ls.configure(params.settings)
         ls.recheck_all()
+
+    @server.feature(types.SHUTDOWN)
+    def shutdown(ls: OdServer, params: None) -> None:
+        ls.children.close_all()
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: OdServer, params: types.DidOpenTextDocumentParams) -> None:
@@ -71,6 +80,18 @@ def _closed(state: Open | None) -> None:
 
 
 def serve() -> None:
-    """Serve on stdin/stdout until the client says exit."""
+    """Serve on stdin/stdout until the client says exit or stdin ends; then no process of ours is left running.
+    A child (process.py) ends at once then, even in the middle of a check: nobody waits for it."""
     log_in_one_line()
-    build().start_io()
+    server = build()
+    child = PARENT in os.environ
+    if child:
+        server.children.above = None
+        watch_parent()
+    server.children.recording = stdin = Recording(sys.stdin.buffer)
+    server.start_io(stdin)  # type: ignore[arg-type]  # read as a file: lines, then bodies
+    server.children.end()
+    if child:
+        with contextlib.suppress(ValueError, OSError):  # pygls may have closed stdout
+            sys.stdout.flush()
+        os._exit(0)

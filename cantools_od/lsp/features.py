@@ -229,7 +229,7 @@ def _outline_and_completion(server: OdServer) -> None:
 
     @server.feature(types.WORKSPACE_SYMBOL)
     @guarded
-    def on_workspace_symbols(ls: OdServer, params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
+    async def on_workspace_symbols(ls: OdServer, params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
         found: list[types.WorkspaceSymbol] = []
         for uri in list(ls.open):
             current = _device(ls, uri)
@@ -237,6 +237,9 @@ def _outline_and_completion(server: OdServer) -> None:
                 device, lines, state = current
                 left = WORKSPACE_SYMBOLS - len(found)
                 found += outline.workspace_symbols(uri, device, _index(state, device), lines, params.query, left)
+        for item in await ls.children.symbols(params.query):  # those of the documents served by other processes
+            if len(found) < WORKSPACE_SYMBOLS:
+                found.append(ls.protocol._converter.structure(item, types.WorkspaceSymbol))
         return found
 
     @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import logging
 import sys
+from collections.abc import Callable
 from typing import Any
 
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams, JsonRpcInvalidRequest, JsonRpcParseError
@@ -21,16 +22,21 @@ def say(line: str) -> None:
 
 
 class _Rejected:
-    """A message already answered with an error (or, for a notification, logged)."""
+    """A message already answered with an error (or, for a notification, logged), or passed on."""
 
 
 _REJECTED = _Rejected()
 
 
 class OdProtocol(LanguageServerProtocol):
+    divert: Callable[[dict[str, Any]], bool] | None = None
+    """Takes a message that another process serves (process.py), before pygls reads it: True when taken."""
+
     def structure_message(self, data: dict[str, Any]) -> Any:
         if "jsonrpc" not in data:  # a part of a message: pygls builds the message from its parts
             return data
+        if self.divert is not None and self.divert(data):
+            return _REJECTED
         try:
             return super().structure_message(data)
         except JsonRpcException:

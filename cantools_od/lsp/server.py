@@ -18,12 +18,19 @@ from .diagnostics import diagnostics
 from .document import Analysis, Encoding, analyse, path_of
 from .incremental import reanalyse
 from .positions import Lines
+from .process import Children
 from .quick import quick_findings
 from .rpc import OdProtocol, is_parse_error, say
+from .where import Index
 
 DEBOUNCE = 0.1
 """Seconds of quiet after an edit before the document is read and linted again, when the edit follows another
 within that time (a burst: typing, a paste in steps, an undo); an edit after a quiet spell is checked at once."""
+
+EAGER_INDEX = 2_000_000
+"""Characters up to which a document's index (where hover and navigation look keys up) is made after each check,
+in its queue; a larger one's is made at the first request that needs it (seconds of work for 20 MB, for nothing
+when nobody hovers)."""
 
 
 @dataclass
@@ -74,17 +81,34 @@ class OdServer(LanguageServer):
         self.resolves = False
         """The client asks for a code action's edit when the user picks it (codeAction/resolve)."""
         self.tasks: set[asyncio.Task[None]] = set()
+        self.children = Children(self._relay, self._child_stopped)
+        """The processes that serve the large documents (process.py)."""
+        assert isinstance(self.protocol, OdProtocol)
+        self.protocol.divert = self.children.take
+
+    def _relay(self, data: bytes) -> None:
+        """A child's message, framed, written to the editor as it came."""
+        writer = self.protocol.writer
+        if writer is not None:  # stdin/stdout, the only transport: a plain write
+            writer.write(data)
+
+    def _child_stopped(self, uri: str, reason: str) -> None:
+        start = types.Range(types.Position(0, 0), types.Position(0, 0))
+        found = [types.Diagnostic(start, reason, types.DiagnosticSeverity.Error, source="cantools-od")]
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found))
+        say(f"{uri}: {reason}")
 
     def configure(self, settings: object) -> None:
         """initializationOptions or workspace/didChangeConfiguration's settings (those under "cantools-od" when
-        given so, as VS Code sends them): {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "..."};
-        a setting not given keeps its value."""
+        given so, as VS Code sends them): {"nodeId": 5, "canFd": true, "profile": "canopennode", "rulesUrl": "...",
+        "ownProcessAbove": 2000000}; a setting not given keeps its value."""
         if isinstance(settings, dict) and isinstance(settings.get("cantools-od"), dict):
             settings = settings["cantools-od"]
         if not isinstance(settings, dict):
             return
         self.settings.update(settings)
         settings = self.settings
+        self.children.configure(settings)
         node_id = settings.get("nodeId")
         profile = settings.get("profile")
         self.options = LintOptions(
@@ -164,6 +188,13 @@ class OdServer(LanguageServer):
             return
         state.analysis, state.lines, state.cache = analysis, lines, {}
         self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found, version))
+        if analysis.device is not None and len(text) <= EAGER_INDEX:  # made beside the loop, not at the first hover
+            try:
+                index = await self.in_worker(uri, Index, analysis.device)
+            except RuntimeError:  # closed meanwhile
+                return
+            if state.analysis is analysis:
+                state.cache.setdefault("index", index)
 
     def _published(self, analysis: Analysis, text: str) -> tuple[Lines, list[types.Diagnostic]]:
         lines = Lines(text)

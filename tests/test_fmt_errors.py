@@ -66,3 +66,26 @@ def test_help_and_pages_say_the_same(tmp_path: Path) -> None:
         assert "the errors of lint's rules" in pages[command].lower(), command
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     assert all("with errors is left" not in text for text in [readme, *pages.values()])
+
+
+# lely refuses `0x180+$NODEID` (EDS033, an error lint reports), but the reader reads it whole, one way.
+NODEID_LAST = DRIVE.replace(b"DefaultValue=$NODEID+0x180\n", b"DefaultValue=0x180+$NODEID\n", 1)
+
+
+def test_an_error_about_peers_on_a_value_read_whole_does_not_stop_gen(tmp_path: Path) -> None:
+    assert NODEID_LAST != DRIVE
+    (tmp_path / "drive.eds").write_bytes(NODEID_LAST)
+    assert "[EDS033]" in run("lint", "drive.eds", cwd=tmp_path).stdout
+    made = run("gen", "drive.eds", "-t", "c", "-t", "canopennode", "-o", "out", cwd=tmp_path)
+    assert made.returncode == 0 and "error" not in made.stderr, made.stderr
+    assert "0x180" in (tmp_path / "out" / "OD.c").read_text(encoding="utf-8")  # stored as the stack's base
+
+
+def test_fmt_keeps_an_empty_file_info_section(tmp_path: Path) -> None:
+    """An empty [FileInfo] may be all that tells a damaged file is an EDS (found by fuzzing): fmt keeps it, so its
+    output is read back as one."""
+    text = b"[FileInfo]\n\n[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x0007\nAccessType=ro\n"
+    (tmp_path / "bare.eds").write_bytes(text)
+    assert run("fmt", "bare.eds", cwd=tmp_path).returncode == 0
+    assert (tmp_path / "bare.eds").read_bytes().startswith(b"[FileInfo]\n")
+    assert run("dump", "bare.eds", cwd=tmp_path).returncode == 0

@@ -27,8 +27,8 @@ def type_entry(device: Device, var: Variable, owner: Object, field: str, entry: 
 def store(var: Variable, field: str, entry: Entry, parsed: Parsed, report: Report) -> None:
     """A typed value into the reader's own instance (no validation to run), with its notes reported."""
     var.__dict__[field] = parsed.value
-    for code, severity, message in parsed.notes:
-        report.add(code, severity, f"{entry.key}: {message}", entry.line, entry.value_col)
+    for note in parsed.notes:
+        report.add(note.code, note.severity, f"{entry.key}: {note.message}", entry.line, entry.value_col)
     if parsed.comment is not None:
         key = OBJECT_KEYS[normalize(entry.key)][0]
         var.comments = {**var.comments, key: [*var.comments.get(key, []), parsed.comment]}

@@ -16,7 +16,17 @@ from ..model import NodeIdExpr, RawValue, Severity, TimeValue, Value, ValueKind
 from ..model.assemble import construct
 from .keys import MAX_DIGITS
 
-Note = tuple[str, Severity, str]
+
+class Note(NamedTuple):
+    """Something unusual about a value's text: a diagnostic for the reader to place."""
+
+    code: str
+    severity: Severity
+    message: str
+    # How an XDD reader takes the note: the same, milder (a form only lely refuses: lely reads no XDD) or not at
+    # all (hex bytes separated by blanks: CANopenEditor's own XDD spelling of OCTET_STRING values).
+    in_xdd: Severity | None = None
+    silent_in_xdd: bool = False
 
 
 class Parsed(NamedTuple):
@@ -77,14 +87,14 @@ def _number(token: str) -> tuple[int, list[Note]]:
     notes: list[Note] = []
     digits = _SUFFIX.sub("", token)  # u and l are no hex digits, so this is safe for hex too
     if digits != token:
-        notes.append(("EDS032", Severity.WARNING, f"C suffix in {token!r} is not CiA 306 syntax"))
+        notes.append(Note("EDS032", Severity.WARNING, f"C suffix in {token!r} is not CiA 306 syntax"))
     if digits[:2].lower() == "0x":
         return int(digits, 16), notes
     if len(digits) > 1 and digits[0] == "0":
         if any(c in "89" for c in digits):
             raise ValueError(f"{token!r} is not a valid octal number")
         notes.append(
-            (
+            Note(
                 "EDS032",
                 Severity.WARNING,
                 f"{token!r} is octal ({int(digits, 8)}) per CiA 306; python-canopen reads it differently",
@@ -122,19 +132,15 @@ def _parse_integer_expr(text: str) -> tuple[int | NodeIdExpr, list[Note]]:
             raise ValueError(f"{text!r}: arithmetic is allowed only with $NODEID")
         return total, notes
     if nodeid_at > 0:
-        notes.append(
-            (
-                "EDS033",
-                Severity.ERROR,
-                f"{text!r}: $NODEID should come first ($NODEID+n); lely rejects this form",
-            )
-        )
+        message = f"{text!r}: $NODEID should come first ($NODEID+n); lely rejects this form"
+        notes.append(Note("EDS033", Severity.ERROR, message, in_xdd=Severity.WARNING))
     elif operands > 2:
-        notes.append(("EDS033", Severity.ERROR, f"{text!r}: python-canopen reads no value and lely rejects it"))
+        message = f"{text!r}: python-canopen reads no value and lely rejects it"
+        notes.append(Note("EDS033", Severity.ERROR, message, in_xdd=Severity.WARNING))
     elif "-" in text:
-        notes.append(("EDS033", Severity.ERROR, f"{text!r}: $NODEID may only be added to"))
+        notes.append(Note("EDS033", Severity.ERROR, f"{text!r}: $NODEID may only be added to"))
     if text.count("$") == 1 and "$NODEID" not in text:
-        notes.append(("EDS033", Severity.WARNING, f"{text!r}: write $NODEID in upper case"))
+        notes.append(Note("EDS033", Severity.WARNING, f"{text!r}: write $NODEID in upper case"))
     return construct(NodeIdExpr, {"offset": total, "text": text}), notes
 
 
@@ -158,7 +164,7 @@ def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: 
         return Parsed(None)
     if len(text) > _LONGEST_NUMBER and kind in _NUMBERS:  # quoted in no message: it may be megabytes
         why = f"a value of {len(text)} characters; no {type_name} is written so long"
-        return Parsed(construct(RawValue, {"text": text}), (("EDS030", Severity.ERROR, why),))
+        return Parsed(construct(RawValue, {"text": text}), (Note("EDS030", Severity.ERROR, why),))
     try:
         return _parse(text, kind, bits, type_name)
     except ValueError as error:
@@ -167,7 +173,7 @@ def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: 
             head, comment = text[: cut.start()], text[cut.end() - 1 :]
             retry = parse_value(head, kind, bits, type_name)
             if not isinstance(retry.value, RawValue):
-                note = (
+                note = Note(
                     "EDS032",
                     Severity.WARNING,
                     f"inline comment {comment!r} after the value; CiA 306 has none, tools disagree on it",
@@ -175,8 +181,10 @@ def parse_value(text: str, kind: ValueKind | None, bits: int | None, type_name: 
                 return Parsed(retry.value, (*retry.notes, note), comment)
         if type_name == "DOMAIN" and text in ("0", "0x0", "0x00"):  # CANopenNode's "empty" DOMAIN
             why = f"{text!r} for DOMAIN: CANopenNode's way to say empty; other tools reject it"
-            return Parsed(construct(RawValue, {"text": text}), (("EDS030", Severity.WARNING, why),))
-        return Parsed(construct(RawValue, {"text": text}), (("EDS030", Severity.ERROR, f"{error} for {type_name}"),))
+            return Parsed(construct(RawValue, {"text": text}), (Note("EDS030", Severity.WARNING, why),))
+        return Parsed(
+            construct(RawValue, {"text": text}), (Note("EDS030", Severity.ERROR, f"{error} for {type_name}"),)
+        )
 
 
 def _parse(text: str, kind: ValueKind | None, bits: int | None, type_name: str) -> Parsed:
@@ -190,7 +198,7 @@ def _parse(text: str, kind: ValueKind | None, bits: int | None, type_name: str) 
             and (1 << (bits - 1)) <= number < (1 << bits)
         ):
             notes.append(
-                (
+                Note(
                     "EDS032",
                     Severity.WARNING,
                     f"{text!r} read as two's complement ({number - (1 << bits)}); lely reads it as overflow",
@@ -211,7 +219,7 @@ def _parse(text: str, kind: ValueKind | None, bits: int | None, type_name: str) 
             raise ValueError(f"{text!r} is not hex byte pairs")
         blanks: tuple[Note, ...] = ()
         if compact != text:
-            blanks = (("EDS032", Severity.WARNING, "hex bytes separated by blanks"),)
+            blanks = (Note("EDS032", Severity.WARNING, "hex bytes separated by blanks", silent_in_xdd=True),)
         return Parsed(bytes.fromhex(compact), blanks)
     if kind is ValueKind.TIME:
         parts = text.split()

@@ -5,7 +5,8 @@ from __future__ import annotations
 from bisect import bisect_right
 from collections.abc import Callable
 
-from ..model import Device, Diagnostic, Severity
+from ..model import Device, Diagnostic
+from ..model.device import blocking_errors
 from . import ini
 from .decode import decode
 from .keys import OBJECT_SECTION
@@ -32,8 +33,9 @@ def _index(name: str) -> int | None:
 
 def damaged_objects(device: Device) -> dict[int, list[Diagnostic]]:
     """The objects whose sections have an error, with those errors: an invalid value, a stray or
-    over-long line, a broken header, a sub-object without its object..."""
-    errors = [d for d in device.diagnostics if d.severity is Severity.ERROR and d.location.line > 0]
+    over-long line, a broken header, a sub-object without its object... Not the errors about peers on a value
+    read whole (`READ_WHOLE`: `0x80+$NODEID` is 80h + node-ID to the reader and to the code made of it)."""
+    errors = [d for d in blocking_errors(device) if d.location.line > 0]
     if not errors or device._original is None:
         return {}
     find = object_at(device._original)

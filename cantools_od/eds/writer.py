@@ -46,15 +46,13 @@ def sections(
     had with an empty value: peers read `DefaultValue=` as an empty string or no value, not as absent."""
     hints = Hints.of(device) if not as_written else NO_HINTS
     style = _Style(dcf, as_written, ints, hints)
-    # [FileInfo] and [DeviceInfo] are mandatory, but are not made up when the model has nothing for them.
-    out = [
-        section
-        for section in (
-            _keyed("FileInfo", device.file_info, FILE_INFO_KEYS, style),
-            _keyed("DeviceInfo", device.device_info, DEVICE_INFO_KEYS, style),
-        )
-        if section.entries or section.comments
-    ]
+    # [FileInfo] and [DeviceInfo] are mandatory, but are not made up when the model has nothing for them; an
+    # empty one the file has is kept (it may be all that tells the file is an EDS).
+    heads = (
+        (device.file_info, _keyed("FileInfo", device.file_info, FILE_INFO_KEYS, style)),
+        (device.device_info, _keyed("DeviceInfo", device.device_info, DEVICE_INFO_KEYS, style)),
+    )
+    out = [section for part, section in heads if part.origin is not None or section.entries or section.comments]
     if device.commissioning is not None or dcf:
         commissioning = device.commissioning or Commissioning.model_construct()  # no schema built to write
         if dcf and device.node_id is not None:

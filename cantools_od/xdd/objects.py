@@ -20,7 +20,6 @@ from ..model import (
     Device,
     Object,
     ObjectKind,
-    Severity,
     SubObject,
     ValueKind,
     Variable,
@@ -311,12 +310,10 @@ class ObjectReader:
                 text = "1" if text.strip().lower() == "true" else "0"
             parsed = parse_value(text, kind, dtype.bits if dtype else None, dtype.name if dtype else "this type")
             setattr(var, pending.field, parsed.value)
-            for code, severity, message in parsed.notes:
-                if "separated by blanks" in message:
-                    continue  # CANopenEditor's own XDD spelling of OCTET_STRING values
-                if code == "EDS033" and "lely rejects" in message:
-                    severity = Severity.WARNING  # lely reads no XDD: a spelling only lely refuses is portability here
-                self.ctx.report.add(code, severity, f"{pending.key}: {message}", *pending.where)
+            for note in parsed.notes:
+                if not note.silent_in_xdd:
+                    severity = note.in_xdd or note.severity
+                    self.ctx.report.add(note.code, severity, f"{pending.key}: {note.message}", *pending.where)
 
 
 def _standard_type(owner: Object, element: Element) -> int | None:

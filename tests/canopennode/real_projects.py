@@ -98,4 +98,8 @@ PROJECTS = (
     Project("sicrisembay/CANopenNode_C2000_Motor", "7ccacc5f9c36106510e41fe8e385dbdf765cf804",
             "controller/controller/controller.xdd", "controller/controller",
             ("components/CANopen/CO_driver_target.h",)),
+    # The master's OD of a motor vendor's STM32 example, in a folder named in Chinese ("control examples").
+    Project("dmBots/dm_canopen", "f6a822d9a8f691ae3c65e1d0a8e4d22c1407ab80", "eds/dm4310_master.xdd",
+            "控制例程/STM32/canopen_master/User/canopen_node/CANopenNode_STM32",
+            ("控制例程/STM32/canopen_master/User/canopen_node/CANopenNode/example/CO_driver_target.h",)),
 )  # fmt: skip

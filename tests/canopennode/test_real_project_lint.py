@@ -114,6 +114,14 @@ PROJECT_LINT: dict[str, tuple[Judged, ...]] = {
         Judged("EDS040", (21, 23), True, IDENTITY),
         Judged("PDO051", (1128, 1133, 1138), False, TPDO_DUMMY),
     ),
+    "dmBots/dm_canopen:eds/dm4310_master.xdd": (
+        Judged("EDS026", (824,), True,
+               "1016h sub0 is 2 while sub-indices 1-9 are described (and stored: OD.c's array has 9): the device "
+               "answers 2 to a master that reads how many heartbeat consumers it has, and serves 9"),
+        Judged("COB009", (1597,), True,
+               "TPDO2 and TPDO3 both store 0x301, which is neither one's pre-defined base, so CANopenNode sends both "
+               "on 301h as written (CO_PDO.c adds the node-ID to a base COB-ID only): two PDOs on one CAN-ID"),
+    ),
 }  # fmt: skip
 
 

@@ -11,7 +11,7 @@ from lsprotocol import types
 
 from . import features
 from .document import Encoding, path_of
-from .process import PARENT, Recording, watch_parent
+from .process import PARENT, watch_parent
 from .rpc import log_in_one_line
 from .server import OdServer, Open
 from .text import faster
@@ -88,7 +88,7 @@ def serve() -> None:
     if child:
         server.children.above = None
         watch_parent()
-    server.children.recording = stdin = Recording(sys.stdin.buffer)
+    stdin = server.children.record(sys.stdin.buffer)
     server.start_io(stdin)  # type: ignore[arg-type]  # read as a file: lines, then bodies
     server.children.end()
     if child:

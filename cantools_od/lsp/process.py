@@ -38,6 +38,12 @@ _OWN = "cantools-od/"
 """Prefix of the ids of this server's own requests to a child (the editor's ids are passed on unchanged)."""
 _ID = re.compile(rb'\{\s*"id":\s*("(?:[^"\\]|\\.)*"|-?\d+)')
 _NOTIFICATIONS = ("textDocument/didChange", "textDocument/didSave", "textDocument/didClose")
+STAND_IN = "cantools-od/standIn"
+"""The method of the message pygls decodes in place of a large one (Recording); never seen by pygls' handlers."""
+_HEAD = 4096
+_METHOD = re.compile(rb'"method"\s*:\s*"(textDocument/did(?:Open|Change))"')
+_URI = re.compile(rb'"uri"\s*:\s*("(?:[^"\\]|\\.)*")')
+_ID_MEMBER = re.compile(rb'"id"\s*:')
 _STOPPED = -32603
 
 
@@ -49,19 +55,48 @@ def _frame(message: dict[str, Any]) -> bytes:
     return _framed(json.dumps(message).encode("utf-8"))
 
 
+def _member(pattern: re.Pattern[bytes], body: bytes) -> re.Match[bytes] | None:
+    """A member in the first or last bytes of a message, where all but its one large member are. A match cannot
+    start inside a string: its second quote is unescaped, so it closes a string, and a colon follows only a key."""
+    return pattern.search(body, 0, _HEAD) or pattern.search(body, max(len(body) - _HEAD, 0))
+
+
+def _document_of(body: bytes) -> tuple[str, str] | None:
+    """The method and document of a didOpen or didChange notification (the document's URI comes before its text in
+    the message), else None."""
+    method, uri = _member(_METHOD, body), _URI.search(body, 0, _HEAD)
+    if method is None or uri is None or _member(_ID_MEMBER, body) is not None:
+        return None
+    try:
+        found = json.loads(uri.group(1))
+    except ValueError:
+        return None
+    return (method.group(1).decode(), found) if isinstance(found, str) else None
+
+
 class Recording:
     """stdin as pygls reads it (a header line at a time, then a body), keeping the last body: the message pygls
-    is reading, passed on to a child as it came (writing 20 MB of JSON again would hold this process)."""
+    is reading, passed on to a child as it came (writing 20 MB of JSON again would hold this process).
 
-    def __init__(self, stream: BinaryIO) -> None:
-        self.stream, self.last = stream, b""
+    pygls reads in a thread of its pool, then decodes the body on the loop, all of it, before it reads the next
+    message. A body longer than `above` bytes that opens or changes a document is therefore given to pygls as a
+    stand-in of a few bytes naming the document (`STAND_IN`), and `Children.take` passes the body kept here on
+    to the document's child, on the loop and in the order the messages came; the 20 MB are never decoded here."""
+
+    def __init__(self, stream: BinaryIO, above: Callable[[], int | None] = lambda: None) -> None:
+        self.stream, self.last, self.above = stream, b"", above
 
     def readline(self) -> bytes:
         return self.stream.readline()
 
     def read(self, size: int = -1) -> bytes:
         self.last = self.stream.read(size)
-        return self.last
+        above = self.above()
+        found = _document_of(self.last) if above is not None and len(self.last) > above else None
+        if found is None:
+            return self.last
+        method, uri = found
+        return json.dumps({"jsonrpc": "2.0", "method": STAND_IN, "params": {"method": method, "uri": uri}}).encode()
 
 
 def _uri_of(params: object) -> str | None:
@@ -204,33 +239,64 @@ class Children:
             above = settings[SETTING]
             self.above = above if isinstance(above, int) and not isinstance(above, bool) and above >= 0 else None
 
-    def take(self, message: dict[str, Any]) -> bool:
-        """Pass the message on to the child it concerns: True when it is the child's alone."""
+    def record(self, stream: BinaryIO) -> Recording:
+        """The server's stdin, read so that a large document's messages pass to its child undecoded."""
+        self.recording = Recording(stream, lambda: self.above)
+        return self.recording
+
+    def take(self, message: dict[str, Any]) -> dict[str, Any] | None:
+        """Pass the message on to the child it concerns: None when it is the child's alone, else the message for
+        this server (the whole message a stand-in stood for, decoded now)."""
         method, params = message.get("method"), message.get("params")
+        if method == STAND_IN and isinstance(params, dict):
+            return self._stood_in(params)
         if method == "initialize" and isinstance(params, dict):
             self.initialize = {**params, "initializationOptions": kept_in_process(params.get("initializationOptions"))}
-            return False
+            return message
         if method == "workspace/didChangeConfiguration" and isinstance(params, dict):
             for each in self.of.values():
                 each.send({**message, "params": {**params, "settings": kept_in_process(params.get("settings"))}})
-            return False
+            return message
         if method == "$/cancelRequest" and isinstance(params, dict):
             owner = next((child for child in self.of.values() if params.get("id") in child.pending), None)
             if owner is not None:
                 owner.send(self._as_it_came(message))
-            return owner is not None
+            return message if owner is None else None
         if method == "textDocument/didOpen":
-            return self._opened(message)
+            return None if self._opened(message) else message
         child = self.of.get(_uri_of(params) or "")
         if child is None:
-            return False
+            return message
         child.send(self._as_it_came(message))
         if "id" in message:
             child.pending.add(message["id"])
         if method == "textDocument/didClose":
             del self.of[child.uri]
             child.close()
-        return True
+        return None
+
+    def _stood_in(self, params: dict[str, Any]) -> dict[str, Any] | None:
+        """A large didOpen or didChange (Recording): its body passed on as it came to the document's child (a new
+        one for didOpen, as `_opened` makes); only when no child is to have it, decoded for this server."""
+        uri, body = params.get("uri"), self.recording.last if self.recording is not None else b""
+        large = self.above is not None and len(body) > self.above
+        if params.get("method") == "textDocument/didOpen" and isinstance(uri, str) and large:
+            old = self.of.pop(uri, None)
+            if old is not None:
+                old.close()
+            self._spawn(uri).send(_framed(body))
+            return None
+        if params.get("method") == "textDocument/didChange" and uri in self.of:
+            self.of[uri].send(_framed(body))
+            return None
+        whole = json.loads(body)
+        return self.take(whole) if isinstance(whole, dict) else whole
+
+    def _spawn(self, uri: str) -> Child:
+        child = self.of[uri] = Child(uri, self.initialize, self.relay)
+        child.on_stop = self._stopped
+        self.spawned.append(child)
+        return child
 
     def _opened(self, message: dict[str, Any]) -> bool:
         params = message.get("params")
@@ -244,10 +310,7 @@ class Children:
             old.close()
         if self.above is None or len(text) <= self.above:
             return False
-        child = self.of[uri] = Child(uri, self.initialize, self.relay)
-        child.on_stop = self._stopped
-        self.spawned.append(child)
-        child.send(self._as_it_came(message))
+        self._spawn(uri).send(self._as_it_came(message))
         return True
 
     def _stopped(self, child: Child, code: int | None) -> None:

@@ -29,14 +29,20 @@ _REJECTED = _Rejected()
 
 
 class OdProtocol(LanguageServerProtocol):
-    divert: Callable[[dict[str, Any]], bool] | None = None
-    """Takes a message that another process serves (process.py), before pygls reads it: True when taken."""
+    divert: Callable[[dict[str, Any]], object] | None = None
+    """Takes a message that another process serves (process.py), before pygls reads it: None when taken, else
+    the message for this server (a stand-in for a large message replaced by the whole)."""
 
     def structure_message(self, data: dict[str, Any]) -> Any:
         if "jsonrpc" not in data:  # a part of a message: pygls builds the message from its parts
             return data
-        if self.divert is not None and self.divert(data):
-            return _REJECTED
+        if self.divert is not None:
+            kept = self.divert(data)
+            if kept is None:
+                return _REJECTED
+            if not isinstance(kept, dict) or "jsonrpc" not in kept:  # decoded whole: a JSON value, no message
+                return kept
+            data = kept
         try:
             return super().structure_message(data)
         except JsonRpcException:

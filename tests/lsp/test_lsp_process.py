@@ -187,3 +187,49 @@ async def test_a_document_whose_process_stops_says_so(client: LanguageClient, tm
     )
     assert hover is None  # the server answers (it has no such document), it does not wait for the dead process
     close_file(client, path)
+
+
+def cpu_seconds(pid: int) -> float:
+    """The CPU time a process has spent so far, all its threads (user and system)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rpartition(")")[2].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+PADDING = 3_000_000
+"""Empty objects in a member of the opening message that no server reads (JSON-RPC lets a client add members):
+12 MB whose decoding takes far more CPU than passing them on, so that the difference stands out of the noise."""
+
+
+@ASYNC
+async def test_a_large_document_passes_to_its_process_undecoded(client: LanguageClient, tmp_path: Path) -> None:
+    """The server finds the document of a large didOpen in the first bytes of the message and passes the message
+    on as it came: its own CPU time over the opening and an edit sent right after stays well below what decoding
+    that JSON once takes (CPU time, not wall time: a loaded machine slows neither); the edit reaches the
+    document's process after the opening, and its diagnostics equal lint's of the edited text."""
+    path = _example(tmp_path)
+    uri, text = path.resolve().as_uri(), text_of(path)
+    lines = text.splitlines(keepends=True)
+    line = next(n for n, each in enumerate(lines) if each.startswith("DataType=") and n > lines.index("[1000]\n"))
+    document = {"uri": uri, "languageId": "eds", "version": 1, "text": text}
+    # The method after the parameters, as pygls clients write it (VS Code writes it first: both are found).
+    message = {"params": {"textDocument": document, "padding": [{}] * PADDING}, "method": "textDocument/didOpen",
+               "jsonrpc": "2.0"}  # fmt: skip
+    body = json.dumps(message)
+    started = time.process_time()
+    json.loads(body)
+    decoding = time.process_time() - started
+    change = types.TextDocumentContentChangePartial(
+        range=types.Range(types.Position(line, 0), types.Position(line + 1, 0)), text="DataType=0x0099\n"
+    )
+    server = server_pid(client)
+    before = cpu_seconds(server)
+    client.protocol._send_data(message)
+    client.text_document_did_change(
+        types.DidChangeTextDocumentParams(types.VersionedTextDocumentIdentifier(version=2, uri=uri), [change])
+    )
+    diagnostics = await diagnostics_for(client, uri, 2)
+    spent = cpu_seconds(server) - before
+    path.write_text("".join([*lines[:line], "DataType=0x0099\n", *lines[line + 1 :]]), newline="")
+    assert sorted(seen(diagnostics)) == sorted(expected(Lint([path]).result(), text_of(path)))
+    assert spent < decoding / 2, f"the server spent {spent:.3f} s of CPU; decoding the message takes {decoding:.3f} s"
+    close_file(client, path)

@@ -37,7 +37,6 @@ SYMBOLS_WAIT = 2.0
 _OWN = "cantools-od/"
 """Prefix of the ids of this server's own requests to a child (the editor's ids are passed on unchanged)."""
 _ID = re.compile(rb'\{\s*"id":\s*("(?:[^"\\]|\\.)*"|-?\d+)')
-_NOTIFICATIONS = ("textDocument/didChange", "textDocument/didSave", "textDocument/didClose")
 STAND_IN = "cantools-od/standIn"
 """The method of the message pygls decodes in place of a large one (Recording); never seen by pygls' handlers."""
 _HEAD = 4096

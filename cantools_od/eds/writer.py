@@ -64,7 +64,8 @@ def sections(
         out.append(_with_extra("DummyUsage", entries, usage, style))
     if device.comments is not None:
         out.append(comments_section(device.comments, style))
-    for name, attr in _object_lists(device).items():
+    written = _explicit_indices(device)
+    for name, attr in _object_lists(device, written).items():
         if attr is not None:
             entries = (
                 {"SupportedObjects": format_key("", attr.supported_objects)}
@@ -73,7 +74,6 @@ def sections(
             )
             entries.update({str(pos): f"0x{index:04X}" for pos, index in sorted(attr.entries.items())})
             out.append(_with_extra(name, entries, attr, style))
-    written = _explicit_indices(device)
     for index, obj in device.objects.items():
         if index in written:
             out.extend(_object_sections(device, obj, style))
@@ -82,13 +82,14 @@ def sections(
     return out
 
 
-def _object_lists(device: Device) -> dict[str, ObjectList | None]:
+def _object_lists(device: Device, written: set[int]) -> dict[str, ObjectList | None]:
     """The lists as the model holds them; for a device read from an XDD, which has none (CiA 311 lists no
-    objects), the lists CiA 306 requires of its objects, so that the EDS is complete for tools that follow them."""
+    objects), the lists CiA 306 requires of the objects `written`, so that the EDS is complete for tools that
+    follow them."""
     held: dict[str, ObjectList | None] = {name: getattr(device, attr) for name, attr in OBJECT_LISTS.items()}
     if device.file_format != "xdd" or any(found is not None for found in held.values()):
         return held
-    return dict(object_lists_of(_explicit_indices(device)))
+    return dict(object_lists_of(written))
 
 
 def _explicit_indices(device: Device) -> set[int]:
